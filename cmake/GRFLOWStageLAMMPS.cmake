@@ -1,0 +1,64 @@
+# Stage a LAMMPS source tree with the GRFLOW package added, without writing
+# into the original tree.
+#
+# The staged tree lives in the build directory.  Its src/ is a real directory
+# of symbolic links to the original entries plus a link to our src/GRFLOW, and
+# its cmake/ is a copy whose package list names GRFLOW.  bench/ and potentials/
+# are staged empty so "install" does not copy data GRFLOW never uses.
+#
+# In:  LAMMPS_SOURCE_DIR (original tree), GRFLOW_PACKAGE_DIR (our src/GRFLOW)
+# Out: GRFLOW_STAGED_LAMMPS (staged tree root)
+
+function(grflow_stage_lammps)
+  set(orig ${LAMMPS_SOURCE_DIR})
+  set(stage ${CMAKE_BINARY_DIR}/lammps-staged)
+  if(NOT EXISTS ${orig}/src/version.h OR NOT EXISTS ${orig}/cmake/CMakeLists.txt)
+    message(FATAL_ERROR "LAMMPS_SOURCE_DIR=${orig} is not a LAMMPS source tree "
+      "(no src/version.h or cmake/CMakeLists.txt)")
+  endif()
+  file(STRINGS ${orig}/src/version.h lmp_version REGEX "LAMMPS_VERSION")
+  if(NOT lmp_version MATCHES "4 Feb 2025")
+    message(FATAL_ERROR "GRFLOW needs LAMMPS 4Feb2025; ${orig} has: ${lmp_version}")
+  endif()
+  if(EXISTS ${orig}/src/GRFLOW)
+    message(FATAL_ERROR "${orig}/src already has a GRFLOW folder; pass a clean LAMMPS tree")
+  endif()
+
+  # rebuild the link farm when the original tree changes location
+  set(stamp ${stage}/.grflow-staged-from)
+  set(restage TRUE)
+  if(EXISTS ${stamp})
+    file(READ ${stamp} previous)
+    if(previous STREQUAL "${orig}")
+      set(restage FALSE)
+    endif()
+  endif()
+  if(restage)
+    file(REMOVE_RECURSE ${stage})
+    file(MAKE_DIRECTORY ${stage}/src ${stage}/bench ${stage}/potentials ${stage}/doc)
+    foreach(top lib python tools unittest examples fortran)
+      if(EXISTS ${orig}/${top})
+        file(CREATE_LINK ${orig}/${top} ${stage}/${top} SYMBOLIC)
+      endif()
+    endforeach()
+    file(CREATE_LINK ${orig}/doc/lammps.1 ${stage}/doc/lammps.1 SYMBOLIC)
+    file(GLOB entries RELATIVE ${orig}/src ${orig}/src/*)
+    foreach(e ${entries})
+      file(CREATE_LINK ${orig}/src/${e} ${stage}/src/${e} SYMBOLIC)
+    endforeach()
+    file(CREATE_LINK ${GRFLOW_PACKAGE_DIR} ${stage}/src/GRFLOW SYMBOLIC)
+    file(WRITE ${stamp} "${orig}")
+  endif()
+
+  # copy cmake/ and register GRFLOW as a standard package (idempotent)
+  file(COPY ${orig}/cmake DESTINATION ${stage} REGEX "/cmake/CMakeLists\\.txt$" EXCLUDE)
+  file(READ ${orig}/cmake/CMakeLists.txt cml)
+  string(REPLACE "set(STANDARD_PACKAGES\n" "set(STANDARD_PACKAGES\n  GRFLOW\n" cml_patched "${cml}")
+  if(cml_patched STREQUAL cml)
+    message(FATAL_ERROR "could not add GRFLOW to STANDARD_PACKAGES in ${orig}/cmake/CMakeLists.txt")
+  endif()
+  file(WRITE ${stage}/cmake/CMakeLists.txt.new "${cml_patched}")
+  file(COPY_FILE ${stage}/cmake/CMakeLists.txt.new ${stage}/cmake/CMakeLists.txt ONLY_IF_DIFFERENT)
+  file(REMOVE ${stage}/cmake/CMakeLists.txt.new)
+  set(GRFLOW_STAGED_LAMMPS ${stage} PARENT_SCOPE)
+endfunction()

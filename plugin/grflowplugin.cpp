@@ -1,0 +1,45 @@
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Plugin entry point: registers the GRFLOW styles with a PLUGIN-enabled
+   LAMMPS 4Feb2025 built with the same MPI, LAMMPS_SIZES and compiler.
+     plugin load grflowplugin.so
+------------------------------------------------------------------------- */
+
+#include "lammpsplugin.h"
+#include "version.h"
+
+#include "pair_granular_grflow.h"
+
+using namespace LAMMPS_NS;
+
+static Pair *pair_granular_grflow_creator(LAMMPS *lmp)
+{
+  return new PairGranularGRFLOW(lmp);
+}
+
+extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
+{
+  lammpsplugin_t plugin;
+  auto register_plugin = (lammpsplugin_regfunc) regfunc;
+
+  plugin.version = LAMMPS_VERSION;
+  plugin.style = "pair";
+  plugin.name = "granular/grflow";
+  plugin.info = "GRFLOW linear spring-dashpot contact with sliding, rolling and torsion";
+  plugin.author = "GRFLOW developers";
+  plugin.creator.v1 = (lammpsplugin_factory1 *) &pair_granular_grflow_creator;
+  plugin.handle = handle;
+  (*register_plugin)(&plugin, lmp);
+}

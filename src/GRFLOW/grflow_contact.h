@@ -1,0 +1,288 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   GRFLOW contact kernel: linear spring-dashpot contact between spheres
+   (or a sphere and a flat wall) with sliding, rolling and torsion
+   resistance, after Luding, Granular Matter 10:235 (2008).
+
+   Header only and free of LAMMPS types: plain numbers in, forces out, so
+   that unit tests, pair styles, wall fixes and accelerator variants share
+   one implementation.  The equations are written out in
+   doc/pair_granular_grflow.rst.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_GRFLOW_CONTACT_H
+#define LMP_GRFLOW_CONTACT_H
+
+#include <cmath>
+
+namespace LAMMPS_NS {
+namespace GRFLOW {
+
+  // coefficients of one type pair, SI units
+
+  struct ContactCoeffs {
+    double kn, cn;         // normal stiffness (N/m), viscosity (kg/s)
+    double kt, ct, mut;    // sliding stiffness, viscosity, friction coefficient
+    double kr, cr, mur;    // rolling
+    double ko, co, muo;    // torsion
+  };
+
+  // per-contact history: sliding spring (3), rolling spring (3), torsion spring (1)
+
+  enum { HIST_SLIDE = 0, HIST_ROLL = 3, HIST_TORSION = 6, HIST_SIZE = 7 };
+
+  // factor applied to each history value when the owner of a pair changes
+  // (i <-> j): n and the sliding displacement flip, rolling and torsion do not
+
+  static constexpr double HISTORY_SWAP_FACTOR[HIST_SIZE] = {-1.0, -1.0, -1.0, 1.0, 1.0, 1.0, 1.0};
+
+  // geometry of one contact, set up by the caller
+
+  struct ContactGeometry {
+    double n[3];      // unit normal, pointing from j to i
+    double delta;     // overlap, > 0
+    double arm_i;     // distance from centre of i to the contact point, a_i - delta/2
+    double arm_j;     // same for j (unused for a wall)
+    double varm_i;    // arms used for the contact-point velocity (= arm_i, arm_j
+    double varm_j;    //   unless stock-compatible full radii are requested)
+    double reff;      // reduced radius a' = a_i a_j / (a_i + a_j); a_i for a wall
+  };
+
+  // results of one contact evaluation
+
+  struct ContactForces {
+    double fn;             // normal force magnitude, >= 0
+    double f[3];           // total force on i (on j: -f)
+    double torque_i[3];    // torque on i
+    double torque_j[3];    // torque on j
+    double ft[3];          // sliding force on i
+    double fr[3];          // rolling resistance force (pure torque couple)
+    double fo;             // torsion resistance force, along n
+  };
+
+  static inline double dot3(const double *a, const double *b)
+  {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  }
+
+  static inline void cross3(const double *a, const double *b, double *c)
+  {
+    c[0] = a[1] * b[2] - a[2] * b[1];
+    c[1] = a[2] * b[0] - a[0] * b[2];
+    c[2] = a[0] * b[1] - a[1] * b[0];
+  }
+
+  /* ----------------------------------------------------------------------
+     rotate a stored spring into the plane normal to n, keeping its length
+  ------------------------------------------------------------------------- */
+
+  static inline void rotate_into_plane(double *xi, const double *n)
+  {
+    const double p = dot3(xi, n);
+    if (p == 0.0) return;
+    const double len2_old = dot3(xi, xi);
+    xi[0] -= p * n[0];
+    xi[1] -= p * n[1];
+    xi[2] -= p * n[2];
+    const double len2_new = dot3(xi, xi);
+    const double s = (len2_new > 0.0) ? sqrt(len2_old / len2_new) : 0.0;
+    xi[0] *= s;
+    xi[1] *= s;
+    xi[2] *= s;
+  }
+
+  /* ----------------------------------------------------------------------
+     linear spring-dashpot on a 3-vector displacement xi with velocity v,
+     capped at |f| <= cap (Coulomb): trial f = -k xi - c v; on slip f is
+     scaled to length cap and xi reset to -(f + c v)/k.
+     update: advance xi by v dt and store a slip reset; else xi is read only.
+  ------------------------------------------------------------------------- */
+
+  static inline void spring_dashpot_capped(double k, double c, double cap, const double *v,
+                                           double dt, bool update, double *xi, double *f)
+  {
+    double x0 = xi[0], x1 = xi[1], x2 = xi[2];
+    if (update) {
+      x0 += v[0] * dt;
+      x1 += v[1] * dt;
+      x2 += v[2] * dt;
+    }
+    f[0] = -k * x0 - c * v[0];
+    f[1] = -k * x1 - c * v[1];
+    f[2] = -k * x2 - c * v[2];
+    const double f2 = f[0] * f[0] + f[1] * f[1] + f[2] * f[2];
+    if (f2 > cap * cap) {
+      const double s = cap / sqrt(f2);
+      f[0] *= s;
+      f[1] *= s;
+      f[2] *= s;
+      if (k > 0.0) {
+        const double kinv = 1.0 / k;
+        x0 = -(f[0] + c * v[0]) * kinv;
+        x1 = -(f[1] + c * v[1]) * kinv;
+        x2 = -(f[2] + c * v[2]) * kinv;
+      } else {
+        x0 = x1 = x2 = 0.0;
+      }
+    }
+    if (update) {
+      xi[0] = x0;
+      xi[1] = x1;
+      xi[2] = x2;
+    }
+  }
+
+  /* ----------------------------------------------------------------------
+     the same for a scalar displacement (torsion)
+  ------------------------------------------------------------------------- */
+
+  static inline double spring_dashpot_capped(double k, double c, double cap, double v, double dt,
+                                             bool update, double *xi)
+  {
+    double x = *xi;
+    if (update) x += v * dt;
+    double f = -k * x - c * v;
+    if (fabs(f) > cap) {
+      f = (f > 0.0) ? cap : -cap;
+      x = (k > 0.0) ? -(f + c * v) / k : 0.0;
+    }
+    if (update) *xi = x;
+    return f;
+  }
+
+  /* ----------------------------------------------------------------------
+     normal force magnitude: k_n delta - c_n v.n, clipped at zero (no attraction)
+  ------------------------------------------------------------------------- */
+
+  static inline double normal_force(double kn, double cn, double delta, double vn)
+  {
+    const double fn = kn * delta - cn * vn;
+    return (fn > 0.0) ? fn : 0.0;
+  }
+
+  /* ----------------------------------------------------------------------
+     full contact: forces and torques on i and j from coefficients c,
+     geometry g, relative velocity vrel = v_i - v_j, spins wi, wj.
+     hist points to HIST_SIZE values; they are advanced by dt only if update.
+  ------------------------------------------------------------------------- */
+
+  static inline void contact_forces(const ContactCoeffs &c, const ContactGeometry &g,
+                                    const double *vrel, const double *wi, const double *wj,
+                                    double dt, bool update, double *hist, ContactForces &out)
+  {
+    const double *n = g.n;
+
+    // normal
+
+    const double vn = dot3(vrel, n);
+    const double fn = normal_force(c.kn, c.cn, g.delta, vn);
+    out.fn = fn;
+
+    // sliding: velocity of the material points at the contact point
+
+    double warm[3], wxn[3], vt[3];
+    warm[0] = g.varm_i * wi[0] + g.varm_j * wj[0];
+    warm[1] = g.varm_i * wi[1] + g.varm_j * wj[1];
+    warm[2] = g.varm_i * wi[2] + g.varm_j * wj[2];
+    cross3(warm, n, wxn);
+    vt[0] = vrel[0] - vn * n[0] - wxn[0];
+    vt[1] = vrel[1] - vn * n[1] - wxn[1];
+    vt[2] = vrel[2] - vn * n[2] - wxn[2];
+
+    double *xit = hist + HIST_SLIDE;
+    if (update) rotate_into_plane(xit, n);
+    spring_dashpot_capped(c.kt, c.ct, c.mut * fn, vt, dt, update, xit, out.ft);
+
+    // rolling: v_r = -a' n x (w_i - w_j)
+
+    double wrel[3], nxw[3], vr[3];
+    wrel[0] = wi[0] - wj[0];
+    wrel[1] = wi[1] - wj[1];
+    wrel[2] = wi[2] - wj[2];
+    cross3(n, wrel, nxw);
+    vr[0] = -g.reff * nxw[0];
+    vr[1] = -g.reff * nxw[1];
+    vr[2] = -g.reff * nxw[2];
+
+    double *xir = hist + HIST_ROLL;
+    if (update) rotate_into_plane(xir, n);
+    spring_dashpot_capped(c.kr, c.cr, c.mur * fn, vr, dt, update, xir, out.fr);
+
+    // torsion: v_o = a' (w_i - w_j).n
+
+    const double vo = g.reff * dot3(wrel, n);
+    out.fo = spring_dashpot_capped(c.ko, c.co, c.muo * fn, vo, dt, update, hist + HIST_TORSION);
+
+    // force on i
+
+    out.f[0] = fn * n[0] + out.ft[0];
+    out.f[1] = fn * n[1] + out.ft[1];
+    out.f[2] = fn * n[2] + out.ft[2];
+
+    // torques: sliding -(a - delta/2) n x f_t on both;
+    // rolling +-a' n x f_r and torsion +-a' f_o n, opposite on j
+
+    double nxft[3], nxfr[3], tc[3];
+    cross3(n, out.ft, nxft);
+    cross3(n, out.fr, nxfr);
+    tc[0] = g.reff * (nxfr[0] + out.fo * n[0]);
+    tc[1] = g.reff * (nxfr[1] + out.fo * n[1]);
+    tc[2] = g.reff * (nxfr[2] + out.fo * n[2]);
+    out.torque_i[0] = -g.arm_i * nxft[0] + tc[0];
+    out.torque_i[1] = -g.arm_i * nxft[1] + tc[1];
+    out.torque_i[2] = -g.arm_i * nxft[2] + tc[2];
+    out.torque_j[0] = -g.arm_j * nxft[0] - tc[0];
+    out.torque_j[1] = -g.arm_j * nxft[1] - tc[1];
+    out.torque_j[2] = -g.arm_j * nxft[2] - tc[2];
+  }
+
+  /* ----------------------------------------------------------------------
+     geometry of a sphere-sphere contact from del = x_i - x_j (|del| = r > 0)
+     full_arm: use the radii, not a - delta/2, for the contact-point velocity
+  ------------------------------------------------------------------------- */
+
+  static inline void pair_geometry(const double *del, double r, double radi, double radj,
+                                   bool full_arm, ContactGeometry &g)
+  {
+    const double rinv = 1.0 / r;
+    g.n[0] = del[0] * rinv;
+    g.n[1] = del[1] * rinv;
+    g.n[2] = del[2] * rinv;
+    g.delta = radi + radj - r;
+    const double half = 0.5 * g.delta;
+    g.arm_i = radi - half;
+    g.arm_j = radj - half;
+    g.varm_i = full_arm ? radi : g.arm_i;
+    g.varm_j = full_arm ? radj : g.arm_j;
+    g.reff = radi * radj / (radi + radj);
+  }
+
+  /* ----------------------------------------------------------------------
+     elastic energy stored in the springs of one contact
+  ------------------------------------------------------------------------- */
+
+  static inline double elastic_energy(const ContactCoeffs &c, double delta, const double *hist)
+  {
+    const double *xt = hist + HIST_SLIDE;
+    const double *xr = hist + HIST_ROLL;
+    const double xo = hist[HIST_TORSION];
+    return 0.5 *
+        (c.kn * delta * delta + c.kt * dot3(xt, xt) + c.kr * dot3(xr, xr) + c.ko * xo * xo);
+  }
+
+}    // namespace GRFLOW
+}    // namespace LAMMPS_NS
+
+#endif

@@ -1,0 +1,612 @@
+// clang-format off
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+// clang-format on
+
+/* ----------------------------------------------------------------------
+   Contributing authors: GRFLOW developers
+
+   Linear spring-dashpot contact with sliding, rolling and torsion
+   resistance (Luding 2008) in one pass per neighbor pair.  The physics is
+   in grflow_contact.h; this class does the LAMMPS bookkeeping.
+------------------------------------------------------------------------- */
+
+#include "pair_granular_grflow.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "fix.h"
+#include "fix_dummy.h"
+#include "fix_neigh_history.h"
+#include "force.h"
+#include "memory.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace GRFLOW;
+
+// order of the per type pair arrays; also the pair_coeff keywords
+// (kn, cn positional) and the names served by extract()
+
+const char *const PairGranularGRFLOW::param_names[NPARAM] = {"kn",  "cn", "kt", "ct",
+                                                             "mut", "kr", "cr", "mur",
+                                                             "ko",  "co", "muo"};
+enum { KN, CN, KT, CT, MUT, KR, CR, MUR, KO, CO, MUO };
+
+static constexpr int SVECTOR_SIZE = 11;
+
+/* ---------------------------------------------------------------------- */
+
+PairGranularGRFLOW::PairGranularGRFLOW(LAMMPS *lmp) : Pair(lmp)
+{
+  single_enable = 1;
+  no_virial_fdotr_compute = 1;
+  centroidstressflag = CENTROID_NOTAVAIL;
+  finitecutflag = 1;
+  beyond_contact = 0;
+
+  single_extra = SVECTOR_SIZE;
+  svector = new double[SVECTOR_SIZE];
+
+  dt = update->dt;
+  full_arm = 0;
+  for (auto &p : param) p = nullptr;
+  packed = nullptr;
+  onerad_dynamic = maxrad_dynamic = nullptr;
+  neighprev = 0;
+
+  // placeholder for the FixNeighHistory created in init_style(), so that it
+  // keeps its place in the fix list and its ID for restarts
+
+  fix_history = nullptr;
+  fix_dummy = dynamic_cast<FixDummy *>(
+      modify->add_fix("NEIGH_HISTORY_GRFLOW_DUMMY" + std::to_string(instance_me) + " all DUMMY"));
+}
+
+/* ---------------------------------------------------------------------- */
+
+PairGranularGRFLOW::~PairGranularGRFLOW()
+{
+  if (copymode) return;
+  delete[] svector;
+
+  if (!fix_history)
+    modify->delete_fix("NEIGH_HISTORY_GRFLOW_DUMMY" + std::to_string(instance_me));
+  else
+    modify->delete_fix("NEIGH_HISTORY_GRFLOW" + std::to_string(instance_me));
+
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(cutsq);
+    for (auto &p : param) memory->destroy(p);
+    memory->destroy(packed);
+    delete[] onerad_dynamic;
+    delete[] maxrad_dynamic;
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairGranularGRFLOW::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+
+  // no history updates during setup (forces are recomputed for the same state)
+  const bool update_history = (update->setupflag == 0);
+  const bool use_full_arm = (full_arm != 0);
+
+  double **x = atom->x;
+  double **v = atom->v;
+  double **f = atom->f;
+  double **omega = atom->omega;
+  double **torque = atom->torque;
+  const double *radius = atom->radius;
+  const int *type = atom->type;
+  const int nlocal = atom->nlocal;
+  const int newton_pair = force->newton_pair;
+  const double *special_lj = force->special_lj;
+
+  const int inum = list->inum;
+  const int *ilist = list->ilist;
+  const int *numneigh = list->numneigh;
+  int **firstneigh = list->firstneigh;
+  int **firsttouch = fix_history->firstflag;
+  double **firsthistory = fix_history->firstvalue;
+
+  ContactGeometry g;
+  ContactForces out;
+  double del[3], vrel[3];
+  double evdwl = 0.0;
+
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    const double xtmp = x[i][0];
+    const double ytmp = x[i][1];
+    const double ztmp = x[i][2];
+    const double radi = radius[i];
+    const ContactCoeffs *coeff_i = packed[type[i]];
+    int *touch = firsttouch[i];
+    double *allhistory = firsthistory[i];
+    const int *jlist = firstneigh[i];
+    const int jnum = numneigh[i];
+
+    for (int jj = 0; jj < jnum; jj++) {
+      int j = jlist[jj];
+      const double factor_lj = special_lj[sbmask(j)];
+      j &= NEIGHMASK;
+      if (factor_lj == 0.0) continue;
+
+      del[0] = xtmp - x[j][0];
+      del[1] = ytmp - x[j][1];
+      del[2] = ztmp - x[j][2];
+      const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+      const double radj = radius[j];
+      const double radsum = radi + radj;
+      double *hist = &allhistory[HIST_SIZE * jj];
+
+      if (rsq >= radsum * radsum) {
+        // a contact that ended: its springs are gone
+        if (touch[jj]) {
+          touch[jj] = 0;
+          for (int k = 0; k < HIST_SIZE; k++) hist[k] = 0.0;
+        }
+        continue;
+      }
+      touch[jj] = 1;
+
+      pair_geometry(del, sqrt(rsq), radi, radj, use_full_arm, g);
+      vrel[0] = v[i][0] - v[j][0];
+      vrel[1] = v[i][1] - v[j][1];
+      vrel[2] = v[i][2] - v[j][2];
+      const ContactCoeffs &c = coeff_i[type[j]];
+      contact_forces(c, g, vrel, omega[i], omega[j], dt, update_history, hist, out);
+
+      double fx = out.f[0], fy = out.f[1], fz = out.f[2];
+      if (factor_lj != 1.0) {
+        fx *= factor_lj;
+        fy *= factor_lj;
+        fz *= factor_lj;
+        for (int k = 0; k < 3; k++) {
+          out.torque_i[k] *= factor_lj;
+          out.torque_j[k] *= factor_lj;
+        }
+      }
+
+      f[i][0] += fx;
+      f[i][1] += fy;
+      f[i][2] += fz;
+      torque[i][0] += out.torque_i[0];
+      torque[i][1] += out.torque_i[1];
+      torque[i][2] += out.torque_i[2];
+
+      if (newton_pair || j < nlocal) {
+        f[j][0] -= fx;
+        f[j][1] -= fy;
+        f[j][2] -= fz;
+        torque[j][0] += out.torque_j[0];
+        torque[j][1] += out.torque_j[1];
+        torque[j][2] += out.torque_j[2];
+      }
+
+      if (evflag) {
+        if (eflag) evdwl = factor_lj * elastic_energy(c, g.delta, hist);
+        ev_tally_xyz(i, j, nlocal, newton_pair, evdwl, 0.0, fx, fy, fz, del[0], del[1], del[2]);
+      }
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
+   allocate all arrays
+------------------------------------------------------------------------- */
+
+void PairGranularGRFLOW::allocate()
+{
+  allocated = 1;
+  const int n = atom->ntypes + 1;
+
+  memory->create(setflag, n, n, "pair:setflag");
+  for (int i = 0; i < n; i++)
+    for (int j = 0; j < n; j++) setflag[i][j] = 0;
+  memory->create(cutsq, n, n, "pair:cutsq");
+  for (int k = 0; k < NPARAM; k++) {
+    memory->create(param[k], n, n, "pair:param");
+    for (int i = 0; i < n; i++)
+      for (int j = 0; j < n; j++) param[k][i][j] = 0.0;
+  }
+  memory->create(packed, n, n, "pair:packed");
+  onerad_dynamic = new double[n];
+  maxrad_dynamic = new double[n];
+}
+
+/* ----------------------------------------------------------------------
+   global settings: pair_style granular/grflow [velocity_arm reduced|full]
+------------------------------------------------------------------------- */
+
+void PairGranularGRFLOW::settings(int narg, char **arg)
+{
+  full_arm = 0;
+  int iarg = 0;
+  while (iarg < narg) {
+    if (strcmp(arg[iarg], "velocity_arm") == 0) {
+      if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, "pair_style granular/grflow velocity_arm", error);
+      if (strcmp(arg[iarg + 1], "reduced") == 0)
+        full_arm = 0;
+      else if (strcmp(arg[iarg + 1], "full") == 0)
+        full_arm = 1;
+      else
+        error->all(FLERR, "Unknown pair_style granular/grflow velocity_arm value {}: expected reduced or full",
+                   arg[iarg + 1]);
+      iarg += 2;
+    } else {
+      error->all(FLERR, "Unknown pair_style granular/grflow keyword: {}", arg[iarg]);
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
+   pair_coeff I J kn cn [kt v] [ct v] [mut v] [kr v] [cr v] [mur v]
+                        [ko v] [co v] [muo v] [rolling off] [torsion off]
+   unset keywords take the ratios of the paper's Table 1
+------------------------------------------------------------------------- */
+
+void PairGranularGRFLOW::coeff(int narg, char **arg)
+{
+  if (narg < 4)
+    error->all(FLERR, "Incorrect args for pair_coeff granular/grflow: expected I J kn cn [keyword value ...]");
+  if (!allocated) allocate();
+
+  int ilo, ihi, jlo, jhi;
+  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
+  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+
+  double value[NPARAM];
+  value[KN] = utils::numeric(FLERR, arg[2], false, lmp);
+  value[CN] = utils::numeric(FLERR, arg[3], false, lmp);
+  value[KT] = 0.8 * value[KN];
+  value[CT] = 0.2 * value[CN];
+  value[MUT] = 0.5;
+  value[KR] = 0.1 * value[KN];
+  value[CR] = 0.05 * value[CN];
+  value[MUR] = 0.1;
+  value[KO] = 0.1 * value[KN];
+  value[CO] = 0.05 * value[CN];
+  value[MUO] = 0.1;
+
+  int iarg = 4;
+  while (iarg < narg) {
+    if (iarg + 2 > narg)
+      error->all(FLERR, "Missing value for pair_coeff granular/grflow keyword {}", arg[iarg]);
+    const std::string kw = arg[iarg];
+    if (kw == "rolling" || kw == "torsion") {
+      if (strcmp(arg[iarg + 1], "off") != 0)
+        error->all(FLERR, "pair_coeff granular/grflow {} takes only the value off, not {}", kw,
+                   arg[iarg + 1]);
+      const int first = (kw == "rolling") ? KR : KO;
+      for (int k = first; k < first + 3; k++) value[k] = 0.0;
+    } else {
+      int k = 2;
+      while (k < NPARAM && kw != param_names[k]) k++;
+      if (k == NPARAM) error->all(FLERR, "Unknown pair_coeff granular/grflow keyword: {}", kw);
+      value[k] = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    }
+    iarg += 2;
+  }
+
+  if (value[KN] <= 0.0) error->all(FLERR, "pair_coeff granular/grflow: kn must be > 0, got {}", value[KN]);
+  for (int k = 1; k < NPARAM; k++)
+    if (value[k] < 0.0 || !std::isfinite(value[k]))
+      error->all(FLERR, "pair_coeff granular/grflow: {} must be >= 0, got {}", param_names[k],
+                 value[k]);
+
+  int count = 0;
+  for (int i = ilo; i <= ihi; i++) {
+    for (int j = MAX(jlo, i); j <= jhi; j++) {
+      for (int k = 0; k < NPARAM; k++) param[k][i][j] = value[k];
+      setflag[i][j] = 1;
+      count++;
+    }
+  }
+  if (count == 0) error->all(FLERR, "Incorrect args for pair_coeff granular/grflow: no type pair in range");
+}
+
+/* ----------------------------------------------------------------------
+   init specific to this pair style
+------------------------------------------------------------------------- */
+
+void PairGranularGRFLOW::init_style()
+{
+  if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag)
+    error->all(FLERR, "Pair style granular/grflow requires atom attributes radius, rmass and "
+               "omega (atom_style sphere)");
+  if (comm->ghost_velocity == 0)
+    error->all(FLERR, "Pair style granular/grflow requires ghost atoms to store velocity: "
+               "use comm_modify vel yes");
+
+  neighbor->add_request(this, NeighConst::REQ_SIZE | NeighConst::REQ_HISTORY);
+
+  dt = update->dt;
+
+  // on first init, create the fix that stores the contact history;
+  // it replaces the FixDummy created in the constructor
+
+  if (fix_history == nullptr) {
+    auto cmd = fmt::format("NEIGH_HISTORY_GRFLOW{} all NEIGH_HISTORY {}", instance_me, (int) HIST_SIZE);
+    fix_history = dynamic_cast<FixNeighHistory *>(
+        modify->replace_fix("NEIGH_HISTORY_GRFLOW_DUMMY" + std::to_string(instance_me), cmd, 1));
+    fix_history->pair = this;
+  }
+  fix_history = dynamic_cast<FixNeighHistory *>(
+      modify->get_fix_by_id("NEIGH_HISTORY_GRFLOW" + std::to_string(instance_me)));
+  if (!fix_history) error->all(FLERR, "Could not find pair granular/grflow fix neigh history ID");
+
+  // largest radius per type, including particles that fix pour or fix
+  // deposit will insert later
+
+  auto pours = modify->get_fix_by_style("^pour");
+  auto deps = modify->get_fix_by_style("^deposit");
+  const int ntypes = atom->ntypes;
+  for (int i = 1; i <= ntypes; i++) {
+    onerad_dynamic[i] = 0.0;
+    for (auto &ifix : pours) {
+      int itype = i;
+      double maxrad = *((double *) ifix->extract("radius", itype));
+      if (maxrad > 0.0) onerad_dynamic[i] = maxrad;
+    }
+    for (auto &ifix : deps) {
+      int itype = i;
+      double maxrad = *((double *) ifix->extract("radius", itype));
+      if (maxrad > 0.0) onerad_dynamic[i] = maxrad;
+    }
+  }
+  const double *radius = atom->radius;
+  const int *type = atom->type;
+  for (int i = 0; i < atom->nlocal; i++)
+    onerad_dynamic[type[i]] = MAX(onerad_dynamic[type[i]], radius[i]);
+  MPI_Allreduce(&onerad_dynamic[1], &maxrad_dynamic[1], ntypes, MPI_DOUBLE, MPI_MAX, world);
+}
+
+/* ----------------------------------------------------------------------
+   init for one type pair i,j and corresponding j,i
+   unset I,J coefficients are the geometric means of the I,I and J,J ones
+------------------------------------------------------------------------- */
+
+double PairGranularGRFLOW::init_one(int i, int j)
+{
+  if (setflag[i][j] == 0)
+    for (int k = 0; k < NPARAM; k++) param[k][i][j] = sqrt(param[k][i][i] * param[k][j][j]);
+
+  for (int k = 0; k < NPARAM; k++) param[k][j][i] = param[k][i][j];
+
+  ContactCoeffs &c = packed[i][j];
+  c.kn = param[KN][i][j];
+  c.cn = param[CN][i][j];
+  c.kt = param[KT][i][j];
+  c.ct = param[CT][i][j];
+  c.mut = param[MUT][i][j];
+  c.kr = param[KR][i][j];
+  c.cr = param[CR][i][j];
+  c.mur = param[MUR][i][j];
+  c.ko = param[KO][i][j];
+  c.co = param[CO][i][j];
+  c.muo = param[MUO][i][j];
+  packed[j][i] = c;
+
+  // contact range: sum of the largest radii of the two types
+  return maxrad_dynamic[i] + maxrad_dynamic[j];
+}
+
+/* ----------------------------------------------------------------------
+   proc 0 writes to restart file
+------------------------------------------------------------------------- */
+
+void PairGranularGRFLOW::write_restart(FILE *fp)
+{
+  write_restart_settings(fp);
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      fwrite(&setflag[i][j], sizeof(int), 1, fp);
+      if (setflag[i][j])
+        for (int k = 0; k < NPARAM; k++) fwrite(&param[k][i][j], sizeof(double), 1, fp);
+    }
+}
+
+/* ----------------------------------------------------------------------
+   proc 0 reads from restart file, bcasts
+------------------------------------------------------------------------- */
+
+void PairGranularGRFLOW::read_restart(FILE *fp)
+{
+  read_restart_settings(fp);
+  allocate();
+  const int me = comm->me;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
+      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
+      if (setflag[i][j]) {
+        for (int k = 0; k < NPARAM; k++) {
+          if (me == 0) utils::sfread(FLERR, &param[k][i][j], sizeof(double), 1, fp, nullptr, error);
+          MPI_Bcast(&param[k][i][j], 1, MPI_DOUBLE, 0, world);
+        }
+      }
+    }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairGranularGRFLOW::write_restart_settings(FILE *fp)
+{
+  fwrite(&full_arm, sizeof(int), 1, fp);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairGranularGRFLOW::read_restart_settings(FILE *fp)
+{
+  if (comm->me == 0) utils::sfread(FLERR, &full_arm, sizeof(int), 1, fp, nullptr, error);
+  MPI_Bcast(&full_arm, 1, MPI_INT, 0, world);
+}
+
+/* ----------------------------------------------------------------------
+   one line of coefficients, in pair_coeff syntax after the type(s)
+------------------------------------------------------------------------- */
+
+void PairGranularGRFLOW::write_coeffs(FILE *fp, int i, int j, bool both)
+{
+  if (both)
+    fprintf(fp, "%d %d", i, j);
+  else
+    fprintf(fp, "%d", i);
+  fprintf(fp, " %.17g %.17g", param[KN][i][j], param[CN][i][j]);
+  for (int k = KT; k < NPARAM; k++) fprintf(fp, " %s %.17g", param_names[k], param[k][i][j]);
+  fprintf(fp, "\n");
+}
+
+/* ----------------------------------------------------------------------
+   proc 0 writes to data file
+------------------------------------------------------------------------- */
+
+void PairGranularGRFLOW::write_data(FILE *fp)
+{
+  for (int i = 1; i <= atom->ntypes; i++) write_coeffs(fp, i, i, false);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairGranularGRFLOW::write_data_all(FILE *fp)
+{
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) write_coeffs(fp, i, j, true);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairGranularGRFLOW::reset_dt()
+{
+  dt = update->dt;
+}
+
+/* ----------------------------------------------------------------------
+   force of one pair for compute pair/local and friends; the history is
+   read, never advanced.  fforce = F_n / r; returns the elastic energy.
+------------------------------------------------------------------------- */
+
+double PairGranularGRFLOW::single(int i, int j, int itype, int jtype, double rsq,
+                                  double /*factor_coul*/, double factor_lj, double &fforce)
+{
+  for (int m = 0; m < single_extra; m++) svector[m] = 0.0;
+  fforce = 0.0;
+
+  const double radi = atom->radius[i];
+  const double radj = atom->radius[j];
+  const double radsum = radi + radj;
+  if (rsq >= radsum * radsum) return 0.0;
+
+  double **x = atom->x;
+  double **v = atom->v;
+  double **omega = atom->omega;
+  double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
+  const double r = sqrt(rsq);
+
+  // history of this pair: search I's neighbors for J, starting after the
+  // previous hit, since callers usually walk the list in order
+
+  double zero_history[HIST_SIZE] = {0.0};
+  double *hist = zero_history;
+  const int jnum = list->numneigh[i];
+  const int *jlist = list->firstneigh[i];
+  for (int jj = 0; jj < jnum; jj++) {
+    neighprev++;
+    if (neighprev >= jnum) neighprev = 0;
+    if ((jlist[neighprev] & NEIGHMASK) == j) {
+      hist = &fix_history->firstvalue[i][HIST_SIZE * neighprev];
+      break;
+    }
+  }
+
+  ContactGeometry g;
+  ContactForces out;
+  pair_geometry(del, r, radi, radj, full_arm != 0, g);
+  const double vrel[3] = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
+  const ContactCoeffs &c = packed[itype][jtype];
+  contact_forces(c, g, vrel, omega[i], omega[j], dt, false, hist, out);
+
+  fforce = factor_lj * out.fn / r;
+  svector[0] = factor_lj * out.fn;
+  svector[1] = factor_lj * sqrt(dot3(out.ft, out.ft));
+  svector[2] = factor_lj * sqrt(dot3(out.fr, out.fr));
+  svector[3] = factor_lj * fabs(out.fo);
+  for (int k = 0; k < 3; k++) {
+    svector[4 + k] = factor_lj * out.ft[k];
+    svector[7 + k] = factor_lj * out.fr[k];
+  }
+  svector[10] = factor_lj * out.fo;
+  return factor_lj * elastic_energy(c, g.delta, hist);
+}
+
+/* ----------------------------------------------------------------------
+   per type pair coefficient arrays, for fix adapt
+------------------------------------------------------------------------- */
+
+void *PairGranularGRFLOW::extract(const char *str, int &dim)
+{
+  dim = 2;
+  for (int k = 0; k < NPARAM; k++)
+    if (strcmp(str, param_names[k]) == 0) return (void *) param[k];
+  return nullptr;
+}
+
+/* ----------------------------------------------------------------------
+   history of a pair seen from the other atom: the sliding spring flips
+   with n, the rolling and torsion springs do not
+------------------------------------------------------------------------- */
+
+void PairGranularGRFLOW::transfer_history(double *source, double *target, int /*itype*/,
+                                          int /*jtype*/)
+{
+  for (int k = 0; k < HIST_SIZE; k++) target[k] = HISTORY_SWAP_FACTOR[k] * source[k];
+}
+
+/* ---------------------------------------------------------------------- */
+
+double PairGranularGRFLOW::memory_usage()
+{
+  const double n = atom->ntypes + 1;
+  return n * n * (NPARAM * sizeof(double) + sizeof(ContactCoeffs));
+}
+
+/* ----------------------------------------------------------------------
+   self-interaction range of particle
+------------------------------------------------------------------------- */
+
+double PairGranularGRFLOW::atom2cut(int i)
+{
+  return 2.0 * atom->radius[i];
+}
+
+/* ----------------------------------------------------------------------
+   maximum interaction range for two finite particles
+------------------------------------------------------------------------- */
+
+double PairGranularGRFLOW::radii2cut(double r1, double r2)
+{
+  return r1 + r2;
+}

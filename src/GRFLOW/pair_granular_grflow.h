@@ -1,0 +1,80 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+#ifdef PAIR_CLASS
+// clang-format off
+PairStyle(granular/grflow,PairGranularGRFLOW);
+// clang-format on
+#else
+
+#ifndef LMP_PAIR_GRANULAR_GRFLOW_H
+#define LMP_PAIR_GRANULAR_GRFLOW_H
+
+#include "grflow_contact.h"
+#include "pair.h"
+
+namespace LAMMPS_NS {
+
+class PairGranularGRFLOW : public Pair {
+ public:
+  PairGranularGRFLOW(class LAMMPS *);
+  ~PairGranularGRFLOW() override;
+
+  void compute(int, int) override;
+  void settings(int, char **) override;
+  void coeff(int, char **) override;
+  void init_style() override;
+  double init_one(int, int) override;
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  void write_restart_settings(FILE *) override;
+  void read_restart_settings(FILE *) override;
+  void write_data(FILE *) override;
+  void write_data_all(FILE *) override;
+  void reset_dt() override;
+  double single(int, int, int, int, double, double, double, double &) override;
+  void *extract(const char *, int &) override;
+  void transfer_history(double *, double *, int, int) override;
+  double memory_usage() override;
+  double atom2cut(int) override;
+  double radii2cut(double, double) override;
+
+  // the coefficients of one type pair, as used by the kernel
+  const GRFLOW::ContactCoeffs &coeffs(int itype, int jtype) const { return packed[itype][jtype]; }
+
+  enum { NPARAM = 11 };
+  static const char *const param_names[NPARAM];
+
+ protected:
+  double dt;
+  int full_arm;    // 1: contact-point velocity with full radii (stock compatible)
+
+  // user-facing per type pair coefficients, one array per name in param_names,
+  // (changed by pair_coeff or fix adapt) and their packed copy for the kernel
+  double **param[NPARAM];
+  GRFLOW::ContactCoeffs **packed;
+
+  double *onerad_dynamic, *maxrad_dynamic;
+
+  class FixDummy *fix_dummy;
+  class FixNeighHistory *fix_history;
+  int neighprev;    // search start for single()
+
+  void allocate();
+  void write_coeffs(FILE *, int, int, bool);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
