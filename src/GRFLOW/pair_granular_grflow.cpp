@@ -61,7 +61,9 @@ PairGranularGRFLOW::PairGranularGRFLOW(LAMMPS *lmp) : Pair(lmp)
   centroidstressflag = CENTROID_NOTAVAIL;
   finitecutflag = 1;
   beyond_contact = 0;
+  writedata = 1;
 
+  nondefault_history_transfer = 1;    // see transfer_history()
   single_extra = SVECTOR_SIZE;
   svector = new double[SVECTOR_SIZE];
 
@@ -73,11 +75,18 @@ PairGranularGRFLOW::PairGranularGRFLOW(LAMMPS *lmp) : Pair(lmp)
   neighprev = 0;
 
   // placeholder for the FixNeighHistory created in init_style(), so that it
-  // keeps its place in the fix list and its ID for restarts
+  // keeps its place in the fix list.  Its ID must be the same when a restart
+  // file is read, so it counts GRFLOW pair styles in this LAMMPS instance
+  // (Pair::instance_me counts them across all instances in the process).
 
+  int n = 0;
+  while (modify->get_fix_by_id(fmt::format("NEIGH_HISTORY_GRFLOW{}", n)) ||
+         modify->get_fix_by_id(fmt::format("NEIGH_HISTORY_GRFLOW_DUMMY{}", n)))
+    n++;
+  id_history = fmt::format("NEIGH_HISTORY_GRFLOW{}", n);
+  id_dummy = fmt::format("NEIGH_HISTORY_GRFLOW_DUMMY{}", n);
   fix_history = nullptr;
-  fix_dummy = dynamic_cast<FixDummy *>(
-      modify->add_fix("NEIGH_HISTORY_GRFLOW_DUMMY" + std::to_string(instance_me) + " all DUMMY"));
+  fix_dummy = dynamic_cast<FixDummy *>(modify->add_fix(id_dummy + " all DUMMY"));
 }
 
 /* ---------------------------------------------------------------------- */
@@ -87,10 +96,7 @@ PairGranularGRFLOW::~PairGranularGRFLOW()
   if (copymode) return;
   delete[] svector;
 
-  if (!fix_history)
-    modify->delete_fix("NEIGH_HISTORY_GRFLOW_DUMMY" + std::to_string(instance_me));
-  else
-    modify->delete_fix("NEIGH_HISTORY_GRFLOW" + std::to_string(instance_me));
+  modify->delete_fix(fix_history ? id_history : id_dummy);
 
   if (allocated) {
     memory->destroy(setflag);
@@ -348,13 +354,11 @@ void PairGranularGRFLOW::init_style()
   // it replaces the FixDummy created in the constructor
 
   if (fix_history == nullptr) {
-    auto cmd = fmt::format("NEIGH_HISTORY_GRFLOW{} all NEIGH_HISTORY {}", instance_me, (int) HIST_SIZE);
-    fix_history = dynamic_cast<FixNeighHistory *>(
-        modify->replace_fix("NEIGH_HISTORY_GRFLOW_DUMMY" + std::to_string(instance_me), cmd, 1));
+    auto cmd = fmt::format("{} all NEIGH_HISTORY {}", id_history, (int) HIST_SIZE);
+    fix_history = dynamic_cast<FixNeighHistory *>(modify->replace_fix(id_dummy, cmd, 1));
     fix_history->pair = this;
   }
-  fix_history = dynamic_cast<FixNeighHistory *>(
-      modify->get_fix_by_id("NEIGH_HISTORY_GRFLOW" + std::to_string(instance_me)));
+  fix_history = dynamic_cast<FixNeighHistory *>(modify->get_fix_by_id(id_history));
   if (!fix_history) error->all(FLERR, "Could not find pair granular/grflow fix neigh history ID");
 
   // largest radius per type, including particles that fix pour or fix

@@ -66,6 +66,7 @@ class PairGranularGRFLOW : public Pair {
 
   double *onerad_dynamic, *maxrad_dynamic;
 
+  std::string id_history, id_dummy;
   class FixDummy *fix_dummy;
   class FixNeighHistory *fix_history;
   int neighprev;    // search start for single()
