@@ -1,0 +1,136 @@
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Helpers for GRFLOW tests that drive LAMMPS through its C library API.
+------------------------------------------------------------------------- */
+
+#ifndef GRFLOW_TEST_LAMMPS_FIXTURE_H
+#define GRFLOW_TEST_LAMMPS_FIXTURE_H
+
+#include "library.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace grflow_test {
+
+// one LAMMPS instance, quiet, closed on destruction
+class Lammps {
+ public:
+  Lammps()
+  {
+    const char *args[] = {"grflow_test", "-log", "none", "-echo", "none", "-screen", "none",
+                          "-nocite"};
+    handle = lammps_open_no_mpi(8, (char **) args, nullptr);
+  }
+  ~Lammps() { lammps_close(handle); }
+  Lammps(const Lammps &) = delete;
+  Lammps &operator=(const Lammps &) = delete;
+
+  // run one command; record a test failure with LAMMPS's message if it fails
+  bool cmd(const std::string &line)
+  {
+    lammps_command(handle, line.c_str());
+    if (lammps_has_error(handle)) {
+      char buf[1024];
+      lammps_get_last_error_message(handle, buf, sizeof(buf));
+      ADD_FAILURE() << "LAMMPS command failed: " << line << "\n  " << buf;
+      return false;
+    }
+    return true;
+  }
+  void cmds(const std::vector<std::string> &lines)
+  {
+    for (const auto &l : lines)
+      if (!cmd(l)) return;
+  }
+
+  // run one command that must fail; returns LAMMPS's error message
+  std::string error_of(const std::string &line)
+  {
+    lammps_command(handle, line.c_str());
+    if (!lammps_has_error(handle)) return "";
+    char buf[1024];
+    lammps_get_last_error_message(handle, buf, sizeof(buf));
+    return buf;
+  }
+
+  int natoms() { return (int) lammps_get_natoms(handle); }
+
+  // per-atom 3-vector ordered by atom ID (needs an atom map)
+  std::vector<double> gather3(const char *name)
+  {
+    std::vector<double> data(3 * (size_t) natoms());
+    lammps_gather_atoms(handle, name, 1, 3, data.data());
+    return data;
+  }
+
+  double thermo(const char *keyword) { return lammps_get_thermo(handle, keyword); }
+
+  void *handle;
+};
+
+// largest |a_k - b_k| over all k, relative to the largest |b_k|
+inline double max_rel_diff(const std::vector<double> &a, const std::vector<double> &b)
+{
+  double dmax = 0.0, scale = 0.0;
+  for (size_t k = 0; k < a.size(); k++) {
+    dmax = std::max(dmax, std::fabs(a[k] - b[k]));
+    scale = std::max(scale, std::fabs(b[k]));
+  }
+  return scale > 0.0 ? dmax / scale : dmax;
+}
+
+// print a measured number with the test output, for the record
+inline double measured(const std::string &what, double value)
+{
+  printf("[ measured ] %s = %.3e\n", what.c_str(), value);
+  return value;
+}
+
+// a double as LAMMPS input text, exactly (std::to_string would print %f)
+inline std::string fmt_double(double value)
+{
+  char buf[64];
+  snprintf(buf, sizeof(buf), "%.17g", value);
+  return buf;
+}
+
+// path of a deck or data file known to the build
+inline std::string deck(const std::string &name)
+{
+  return std::string(GRFLOW_TEST_DECKS) + "/" + name;
+}
+
+// a dense periodic packing written as a data file (once per test program)
+inline std::string make_packing(const std::string &tag, int nside, double dmin, double dmax,
+                                double phi)
+{
+  const std::string out = std::string(GRFLOW_TEST_WORKDIR) + "/packing_" + tag + ".data";
+  Lammps lmp;
+  lmp.cmds({"units si", "atom_style sphere", "variable nside equal " + std::to_string(nside),
+            "variable seed equal 4321", "variable dmin equal " + fmt_double(dmin),
+            "variable dmax equal " + fmt_double(dmax), "variable phi equal " + fmt_double(phi), "variable ncomp equal 40000",
+            "variable out string " + out, "include " + deck("dense_packing.lmp")});
+  return out;
+}
+
+}    // namespace grflow_test
+
+#endif

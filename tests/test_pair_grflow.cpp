@@ -1,0 +1,497 @@
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   pair_style granular/grflow through the LAMMPS library API:
+   - a few spheres follow the trajectory that the kernel and a hand-written
+     velocity-Verlet integrator give (with type mixing);
+   - restart and data round trips, fix adapt / pair_coeff changes of mut;
+   - step-0 forces and short runs agree with stock pair granular set up as
+     in shared/notes/contact-law.md;
+   - bad input gives a clear error.
+------------------------------------------------------------------------- */
+
+#include "grflow_contact.h"
+#include "lammps_fixture.h"
+
+#include <array>
+#include <cstdio>
+
+using namespace grflow_test;
+using namespace LAMMPS_NS::GRFLOW;
+
+namespace {
+
+const double PI = 3.14159265358979323846;
+
+// ---------------------------------------------------------------------------
+// Few spheres against the kernel with an independent integrator
+// ---------------------------------------------------------------------------
+
+struct Sphere {
+  double x[3], v[3], w[3], f[3], t[3];
+  double rad, mass;
+  int type;
+};
+
+// mirrors fix nve/sphere (inertia 0.4 m r^2) and the pair loop, using the
+// kernel for every overlapping pair; history per unordered pair (i < j)
+class HandIntegrator {
+ public:
+  HandIntegrator(std::vector<Sphere> s, const ContactCoeffs (&c)[3][3], double dt) :
+      s(s), dt(dt), hist(s.size() * s.size(), std::array<double, HIST_SIZE>{})
+  {
+    for (int a = 1; a <= 2; a++)
+      for (int b = 1; b <= 2; b++) coeff[a][b] = c[a][b];
+  }
+
+  void forces(bool update)
+  {
+    for (auto &p : s)
+      for (int k = 0; k < 3; k++) p.f[k] = p.t[k] = 0.0;
+    for (size_t i = 0; i < s.size(); i++)
+      for (size_t j = i + 1; j < s.size(); j++) {
+        Sphere &a = s[i], &b = s[j];
+        double del[3] = {a.x[0] - b.x[0], a.x[1] - b.x[1], a.x[2] - b.x[2]};
+        const double r = sqrt(dot3(del, del));
+        auto &h = hist[i * s.size() + j];
+        if (r >= a.rad + b.rad) {
+          h.fill(0.0);
+          continue;
+        }
+        ContactGeometry g;
+        ContactForces out;
+        pair_geometry(del, r, a.rad, b.rad, false, g);
+        double vrel[3] = {a.v[0] - b.v[0], a.v[1] - b.v[1], a.v[2] - b.v[2]};
+        const ContactCoeffs &c = coeff[a.type][b.type];
+        contact_forces(c, g, vrel, a.w, b.w, dt, update, h.data(), out);
+        if (update && out.fn > 0.0) {
+          const double cap = 1.0 - 1.0e-12;
+          slid = slid || sqrt(dot3(out.ft, out.ft)) >= cap * c.mut * out.fn;
+          rolled = rolled || sqrt(dot3(out.fr, out.fr)) >= cap * c.mur * out.fn;
+          twisted = twisted || fabs(out.fo) >= cap * c.muo * out.fn;
+        }
+        for (int k = 0; k < 3; k++) {
+          a.f[k] += out.f[k];
+          b.f[k] -= out.f[k];
+          a.t[k] += out.torque_i[k];
+          b.t[k] += out.torque_j[k];
+        }
+      }
+  }
+
+  void run(int nsteps)
+  {
+    const double dtf = 0.5 * dt;
+    forces(false);    // setup
+    for (int n = 0; n < nsteps; n++) {
+      for (auto &p : s) {
+        const double dtfm = dtf / p.mass;
+        const double dtir = (dtf / 0.4) / (p.rad * p.rad * p.mass);
+        for (int k = 0; k < 3; k++) {
+          p.v[k] += dtfm * p.f[k];
+          p.x[k] += dt * p.v[k];
+          p.w[k] += dtir * p.t[k];
+        }
+      }
+      forces(true);
+      for (auto &p : s) {
+        const double dtfm = dtf / p.mass;
+        const double dtir = (dtf / 0.4) / (p.rad * p.rad * p.mass);
+        for (int k = 0; k < 3; k++) {
+          p.v[k] += dtfm * p.f[k];
+          p.w[k] += dtir * p.t[k];
+        }
+      }
+    }
+  }
+
+  std::vector<double> field(int which) const
+  {
+    std::vector<double> out;
+    for (const auto &p : s) {
+      const double *q = which == 0 ? p.x : which == 1 ? p.v : which == 2 ? p.w : which == 3 ? p.f : p.t;
+      out.insert(out.end(), q, q + 3);
+    }
+    return out;
+  }
+
+  std::vector<Sphere> s;
+  double dt;
+  ContactCoeffs coeff[3][3];
+  std::vector<std::array<double, HIST_SIZE>> hist;
+  bool slid = false, rolled = false, twisted = false;    // some contact reached its cap
+};
+
+ContactCoeffs table1(double kn, double cn)
+{
+  return {kn, cn, 0.8 * kn, 0.2 * cn, 0.5, 0.1 * kn, 0.05 * cn, 0.1, 0.1 * kn, 0.05 * cn, 0.1};
+}
+
+// three mutually overlapping spheres of two types, sliding, rolling and
+// spinning against each other
+std::vector<Sphere> three_spheres()
+{
+  std::vector<Sphere> s(3);
+  const double rad[3] = {0.5e-3, 0.75e-3, 0.6e-3};
+  const int type[3] = {1, 2, 1};
+  const double x[3][3] = {{0.0, 0.0, 0.0}, {1.2e-3, 0.1e-3, 0.05e-3}, {0.5e-3, 0.95e-3, -0.1e-3}};
+  // fast spins and sliding, so that every cap is reached within the contact time
+  const double v[3][3] = {{0.5, -1.0, 0.3}, {-0.8, 0.6, 0.0}, {0.2, -0.3, 1.1}};
+  const double w[3][3] = {{3.0e4, -1.0e4, 5.0e4}, {-2.0e4, 4.0e4, 5.0e3}, {1.0e4, 1.0e4, -6.0e4}};
+  for (int i = 0; i < 3; i++) {
+    s[i].rad = rad[i];
+    s[i].type = type[i];
+    s[i].mass = 2650.0 * 4.0 / 3.0 * PI * rad[i] * rad[i] * rad[i];
+    for (int k = 0; k < 3; k++) {
+      s[i].x[k] = x[i][k];
+      s[i].v[k] = v[i][k];
+      s[i].w[k] = w[i][k];
+      s[i].f[k] = s[i].t[k] = 0.0;
+    }
+  }
+  return s;
+}
+
+void setup_three_spheres(Lammps &lmp, const std::vector<Sphere> &s, double dt)
+{
+  lmp.cmds({"units si", "atom_style sphere", "atom_modify map array", "boundary f f f",
+            "comm_modify vel yes", "region box block -0.005 0.005 -0.005 0.005 -0.005 0.005",
+            "create_box 2 box", "neighbor 0.5e-3 bin", "neigh_modify delay 0 every 1 check yes"});
+  char line[512];
+  for (size_t i = 0; i < s.size(); i++) {
+    const auto &p = s[i];
+    snprintf(line, sizeof(line), "create_atoms %d single %.17g %.17g %.17g units box", p.type,
+             p.x[0], p.x[1], p.x[2]);
+    lmp.cmd(line);
+    snprintf(line, sizeof(line),
+             "set atom %zu diameter %.17g density 2650 vx %.17g vy %.17g vz %.17g "
+             "omega %.17g %.17g %.17g",
+             i + 1, 2.0 * p.rad, p.v[0], p.v[1], p.v[2], p.w[0], p.w[1], p.w[2]);
+    lmp.cmd(line);
+  }
+  lmp.cmds({"pair_style granular/grflow", "pair_coeff 1 1 1.0e6 1.15",
+            "pair_coeff 2 2 2.0e6 0.8 mut 0.3 mur 0.2 co 0.01",
+            "timestep " + fmt_double(dt), "fix nve all nve/sphere"});
+}
+
+TEST(PairGRFLOW, ThreeSpheresFollowKernel)
+{
+  const double dt = 1.0e-8;
+  ContactCoeffs c[3][3];
+  c[1][1] = table1(1.0e6, 1.15);
+  c[2][2] = table1(2.0e6, 0.8);
+  c[2][2].mut = 0.3;
+  c[2][2].mur = 0.2;
+  c[2][2].co = 0.01;
+  // documented mixing: geometric mean of every coefficient
+  const double *a = &c[1][1].kn, *b = &c[2][2].kn;
+  double *m = &c[1][2].kn;
+  for (int k = 0; k < 11; k++) m[k] = sqrt(a[k] * b[k]);
+  c[2][1] = c[1][2];
+
+  for (int nsteps : {0, 300}) {
+    SCOPED_TRACE("steps " + std::to_string(nsteps));
+    HandIntegrator ref(three_spheres(), c, dt);
+    ref.run(nsteps);
+
+    Lammps lmp;
+    setup_three_spheres(lmp, three_spheres(), dt);
+    lmp.cmd("run " + std::to_string(nsteps));
+
+    const char *names[5] = {"x", "v", "omega", "f", "torque"};
+    for (int which = 0; which < 5; which++) {
+      const auto got = lmp.gather3(names[which]);
+      const auto want = ref.field(which);
+      EXPECT_LT(measured(std::string("kernel vs lammps ") + names[which] + " after " +
+                             std::to_string(nsteps),
+                         max_rel_diff(got, want)),
+                1.0e-10);
+    }
+    // the run must really have exercised all three Coulomb caps
+    if (nsteps > 0) {
+      EXPECT_TRUE(ref.slid);
+      EXPECT_TRUE(ref.rolled);
+      EXPECT_TRUE(ref.twisted);
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Packings: restart, data files, changing mut, stock comparison
+// ---------------------------------------------------------------------------
+
+class Packings : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite()
+  {
+    poly = make_packing("poly", 6, 1.0e-3, 2.0e-3, 0.60);
+    mono = make_packing("mono", 6, 1.5e-3, 1.5e-3, 0.60);
+  }
+  static std::string poly, mono;
+
+  // read a packing; the caller then sets the pair style
+  static void read(Lammps &lmp, const std::string &data)
+  {
+    lmp.cmds({"units si", "atom_style sphere", "atom_modify map array", "comm_modify vel yes",
+              "read_data " + data + " nocoeff", "neighbor 0.2e-3 bin",
+              "neigh_modify delay 0 every 1 check yes", "timestep 1.0e-7"});
+  }
+
+  // keep the packing deforming so that contacts slide, roll and twist
+  static void drive(Lammps &lmp)
+  {
+    lmp.cmds({"fix nve all nve/sphere",
+              "fix shear all deform 1 x erate -20 y erate 10 z erate 10 remap x units box"});
+  }
+};
+std::string Packings::poly, Packings::mono;
+
+TEST_F(Packings, RestartContinuesTrajectory)
+{
+  const std::string file = std::string(GRFLOW_TEST_WORKDIR) + "/grflow_restart.bin";
+  std::vector<double> want_x, want_w;
+  {
+    Lammps lmp;
+    read(lmp, poly);
+    lmp.cmds({"pair_style granular/grflow", "pair_coeff * * 1.0e6 1.15"});
+    drive(lmp);
+    lmp.cmds({"run 1000", "write_restart " + file, "run 1000"});
+    want_x = lmp.gather3("x");
+    want_w = lmp.gather3("omega");
+  }
+  Lammps lmp;
+  lmp.cmds({"read_restart " + file, "comm_modify vel yes", "neighbor 0.2e-3 bin",
+            "neigh_modify delay 0 every 1 check yes"});
+  drive(lmp);
+  lmp.cmd("run 1000");
+  EXPECT_LT(measured("restart x", max_rel_diff(lmp.gather3("x"), want_x)), 1.0e-13);
+  EXPECT_LT(measured("restart omega", max_rel_diff(lmp.gather3("omega"), want_w)), 1.0e-11);
+
+  // without the contact history (a data file holds none) the same state
+  // does not continue the same way: the test can tell
+  Lammps fresh;
+  const std::string data = std::string(GRFLOW_TEST_WORKDIR) + "/grflow_restart.data";
+  {
+    Lammps mid;
+    mid.cmds({"read_restart " + file, "write_data " + data});
+  }
+  read(fresh, data);
+  fresh.cmds({"pair_style granular/grflow", "pair_coeff * * 1.0e6 1.15"});
+  drive(fresh);
+  fresh.cmd("run 1000");
+  EXPECT_GT(measured("no-history omega", max_rel_diff(fresh.gather3("omega"), want_w)), 1.0e-6);
+}
+
+TEST_F(Packings, WriteDataKeepsCoefficients)
+{
+  // two types with explicit, keyword-set and explicit cross coefficients
+  const std::string data = std::string(GRFLOW_TEST_WORKDIR) + "/grflow_coeffs.data";
+  const std::vector<std::string> pair = {
+      "pair_style granular/grflow", "pair_coeff 1 1 1.0e6 1.15",
+      "pair_coeff 2 2 3.0e6 0.9 kt 1.0e6 ct 0.1 mut 0.4 kr 2.0e5 cr 0.02 mur 0.15 torsion off",
+      "pair_coeff 1 2 2.0e6 1.0 mut 0.2"};
+  const std::vector<std::string> two_types = {
+      "units si", "atom_style sphere", "atom_modify map array", "comm_modify vel yes"};
+  {
+    Lammps lmp;
+    lmp.cmds(two_types);
+    lmp.cmds({"read_data " + poly + " extra/atom/types 1 nocoeff", "set type 1 type/fraction 2 0.5 77",
+              "neighbor 0.2e-3 bin", "timestep 1.0e-7"});
+    lmp.cmds(pair);
+    drive(lmp);
+    lmp.cmds({"run 200", "write_data " + data + " pair ij"});
+  }
+  // the coefficients come from the data file's PairIJ Coeffs ...
+  Lammps from_file;
+  from_file.cmds(two_types);
+  from_file.cmds({"pair_style granular/grflow", "read_data " + data, "neighbor 0.2e-3 bin",
+                  "timestep 1.0e-7", "run 0"});
+  // ... or from the original commands; the data file holds no contact history,
+  // so both start with empty springs and must give the same forces
+  Lammps from_cmds;
+  from_cmds.cmds(two_types);
+  from_cmds.cmds({"read_data " + data + " nocoeff", "neighbor 0.2e-3 bin", "timestep 1.0e-7"});
+  from_cmds.cmds(pair);
+  from_cmds.cmd("run 0");
+  EXPECT_EQ(max_rel_diff(from_file.gather3("f"), from_cmds.gather3("f")), 0.0);
+  EXPECT_EQ(max_rel_diff(from_file.gather3("torque"), from_cmds.gather3("torque")), 0.0);
+
+  // and mixing would have given other forces: the cross term was really read
+  Lammps mixed;
+  mixed.cmds(two_types);
+  mixed.cmds({"read_data " + data + " nocoeff", "neighbor 0.2e-3 bin", "timestep 1.0e-7"});
+  mixed.cmds({pair[0], pair[1], pair[2], "run 0"});
+  EXPECT_GT(max_rel_diff(mixed.gather3("f"), from_cmds.gather3("f")), 1.0e-6);
+}
+
+TEST_F(Packings, ChangingMutKeepsHistory)
+{
+  // mut 0.3 for a stage, then 0.5: by pair_coeff, and by fix adapt
+  auto run_stages = [&](int how) {
+    Lammps lmp;
+    read(lmp, poly);
+    lmp.cmds({"pair_style granular/grflow", "pair_coeff * * 1.0e6 1.15 mut 0.3"});
+    drive(lmp);
+    lmp.cmd("run 500");
+    if (how == 0) lmp.cmd("pair_coeff * * 1.0e6 1.15 mut 0.5");
+    if (how == 1)
+      lmp.cmds({"variable mu equal 0.5",
+                "fix adapt all adapt 0 pair granular/grflow mut * * v_mu reset no", "run 0",
+                "unfix adapt"});
+    lmp.cmd("run 500");
+    return lmp.gather3("omega");
+  };
+  const auto by_coeff = run_stages(0);
+  const auto by_adapt = run_stages(1);
+  const auto unchanged = run_stages(2);
+  EXPECT_LT(measured("adapt vs pair_coeff", max_rel_diff(by_adapt, by_coeff)), 1.0e-12);
+  // the change mattered
+  EXPECT_GT(measured("mut 0.3 vs 0.5", max_rel_diff(unchanged, by_coeff)), 1.0e-6);
+
+  // extract() serves the arrays fix adapt changes
+  Lammps lmp;
+  read(lmp, poly);
+  lmp.cmds({"pair_style granular/grflow", "pair_coeff * * 1.0e6 1.15 mut 0.3"});
+  EXPECT_EQ(lammps_extract_pair_dimension(lmp.handle, "mut"), 2);
+  auto mut = (double **) lammps_extract_pair(lmp.handle, "mut");
+  ASSERT_NE(mut, nullptr);
+  EXPECT_DOUBLE_EQ(mut[1][1], 0.3);
+}
+
+// stock pair granular, set as in shared/notes/contact-law.md
+void compare_with_stock(const std::string &data, bool torsion, double reff)
+{
+  char twist[256] = "";
+  if (torsion)
+    snprintf(twist, sizeof(twist), " twisting sds %.17g %.17g %.17g", 1.0e5 * reff * reff,
+             0.0575 * reff * reff, 0.1 * reff);
+  const std::string stock =
+      std::string("pair_coeff * * hooke 1.0e6 1.15 damping velocity limit_damping "
+                  "tangential linear_history 8.0e5 0.2 0.5 rolling sds 1.0e5 0.0575 0.1") +
+      twist;
+  const std::string ours =
+      std::string("pair_coeff * * 1.0e6 1.15") + (torsion ? "" : " torsion off");
+
+  for (int nsteps : {0, 2000}) {
+    SCOPED_TRACE("steps " + std::to_string(nsteps));
+    Lammps a, b;
+    for (Lammps *l : {&a, &b})
+      l->cmds({"units si", "atom_style sphere", "atom_modify map array", "comm_modify vel yes",
+               "read_data " + data + " nocoeff", "neighbor 0.2e-3 bin",
+               "neigh_modify delay 0 every 1 check yes", "timestep 1.0e-7"});
+    a.cmds({"pair_style granular/grflow velocity_arm full", ours});
+    b.cmds({"pair_style granular", stock});
+    for (Lammps *l : {&a, &b})
+      l->cmds({"fix nve all nve/sphere",
+               "fix shear all deform 1 x erate -20 y erate 10 z erate 10 remap x units box"});
+    a.cmd("run " + std::to_string(nsteps));
+    b.cmd("run " + std::to_string(nsteps));
+    const double tol = nsteps == 0 ? 1.0e-12 : 1.0e-8;
+    const std::string tag = std::string(torsion ? "mono" : "poly") + " vs stock after " +
+        std::to_string(nsteps) + " ";
+    for (const char *name : {"f", "torque", "omega", "x"})
+      EXPECT_LT(measured(tag + name, max_rel_diff(a.gather3(name), b.gather3(name))), tol);
+  }
+}
+
+TEST_F(Packings, MatchesStockPolydisperseNoTorsion)
+{
+  compare_with_stock(poly, false, 0.0);
+}
+
+TEST_F(Packings, MatchesStockMonodisperseWithTorsion)
+{
+  compare_with_stock(mono, true, 0.25 * 1.5e-3);    // a' = R/2 for equal spheres
+}
+
+// ---------------------------------------------------------------------------
+// Bad input
+// ---------------------------------------------------------------------------
+
+std::string error_after(const std::vector<std::string> &setup, const std::string &bad)
+{
+  Lammps lmp;
+  lmp.cmds(setup);
+  return lmp.error_of(bad);
+}
+
+const std::vector<std::string> sphere_box = {
+    "units si", "atom_style sphere", "region box block 0 0.01 0 0.01 0 0.01", "create_box 1 box",
+    "create_atoms 1 single 0.005 0.005 0.005", "pair_style granular/grflow"};
+
+TEST(PairGRFLOWErrors, BadPairCoeff)
+{
+  struct Case {
+    const char *line, *expect;
+  } cases[] = {
+      {"pair_coeff * * 1.0e6", "Incorrect args for pair_coeff granular/grflow"},
+      {"pair_coeff * * 1.0e6 1.15 foo 1", "Unknown pair_coeff granular/grflow keyword: foo"},
+      {"pair_coeff * * 1.0e6 1.15 kt", "Missing value for pair_coeff granular/grflow keyword kt"},
+      {"pair_coeff * * 1.0e6 1.15 mut -0.1", "mut must be >= 0"},
+      {"pair_coeff * * 1.0e6 -1 ", "cn must be >= 0"},
+      {"pair_coeff * * 0 1.15", "kn must be > 0"},
+      {"pair_coeff * * -1e6 1.15", "kn must be > 0"},
+      {"pair_coeff * * 1.0e6 1.15 kr -5", "kr must be >= 0"},
+      {"pair_coeff * * 1.0e6 1.15 rolling on", "rolling takes only the value off"},
+      {"pair_coeff * * abc 1.15", "Expected floating point"},
+      {"pair_coeff * * 1.0e6 1.15 muo nan", "Expected floating point"},
+      {"pair_coeff 1 3 1.0e6 1.15", "Numeric index 3 is out of bounds"},
+  };
+  for (const auto &c : cases) {
+    const std::string msg = error_after(sphere_box, c.line);
+    EXPECT_NE(msg.find(c.expect), std::string::npos) << c.line << " -> '" << msg << "'";
+  }
+}
+
+TEST(PairGRFLOWErrors, BadPairStyle)
+{
+  const std::vector<std::string> box(sphere_box.begin(), sphere_box.end() - 1);
+  std::string msg = error_after(box, "pair_style granular/grflow velocity_arm half");
+  EXPECT_NE(msg.find("velocity_arm value half"), std::string::npos) << msg;
+  msg = error_after(box, "pair_style granular/grflow bogus");
+  EXPECT_NE(msg.find("Unknown pair_style granular/grflow keyword: bogus"), std::string::npos)
+      << msg;
+  msg = error_after(box, "pair_style granular/grflow velocity_arm");
+  EXPECT_NE(msg.find("velocity_arm"), std::string::npos) << msg;
+}
+
+TEST(PairGRFLOWErrors, NeedsSpheresAndGhostVelocities)
+{
+  std::string msg = error_after({"units si", "atom_style atomic",
+                                 "region box block 0 0.01 0 0.01 0 0.01", "create_box 1 box",
+                                 "create_atoms 1 single 0.005 0.005 0.005", "mass 1 1.0",
+                                 "pair_style granular/grflow", "pair_coeff * * 1.0e6 1.15"},
+                                "run 0");
+  EXPECT_NE(msg.find("requires atom attributes radius, rmass and omega"), std::string::npos)
+      << msg;
+
+  std::vector<std::string> setup = sphere_box;
+  setup.push_back("pair_coeff * * 1.0e6 1.15");
+  msg = error_after(setup, "run 0");
+  EXPECT_NE(msg.find("use comm_modify vel yes"), std::string::npos) << msg;
+
+  setup = sphere_box;
+  msg = error_after(setup, "run 0");
+  EXPECT_NE(msg.find("All pair coeffs are not set"), std::string::npos) << msg;
+}
+
+}    // namespace
+
+int main(int argc, char **argv)
+{
+  ::testing::InitGoogleTest(&argc, argv);
+  const int rc = RUN_ALL_TESTS();
+  lammps_mpi_finalize();
+  return rc;
+}
