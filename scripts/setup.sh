@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Set up GRFLOW from a clean clone: Debian packages, the LAMMPS 4Feb2025
+# source (Debian's source package, cached), LAMMPS with GRFLOW built in,
+# grflowplugin.so and the LAMMPS Python module, installed to /usr/local
+# (root) or ~/.local.  Then checks the installed lmp, plugin and module.
+#
+#   scripts/setup.sh [extra cmake -D options]
+#   e.g. scripts/setup.sh -D LAMMPS_SOURCE_DIR=$HOME/lammps-4Feb2025
+set -euo pipefail
+top=$(cd "$(dirname "$0")/.." && pwd)
+cd "$top"
+build=${GRFLOW_BUILD_DIR:-$top/build}
+
+scripts/install-deps.sh
+cmake -S . -B "$build" -G Ninja -D CMAKE_BUILD_TYPE=Release "$@"
+cmake --build "$build" -j "$(nproc)"
+cmake --install "$build" > "$build/install.log"
+prefix=$(sed -n 's/^CMAKE_INSTALL_PREFIX:PATH=//p' "$build/CMakeCache.txt")
+[ "$(id -u)" -eq 0 ] && ldconfig
+
+# the installed pieces, as a user will call them from a new shell
+export PATH="$prefix/bin:$PATH"
+lmp=$(command -v lmp)
+echo "lmp: $lmp"
+"$lmp" -h | grep -q "granular/grflow" || { echo "ERROR: $lmp lacks granular/grflow"; exit 1; }
+plugin=$prefix/lib/lammps/plugins/grflowplugin.so
+printf 'plugin load %s\nplugin list\n' "$plugin" | "$lmp" -log none -nocite 2>&1 \
+  | grep -q "pair style plugin granular/grflow" || { echo "ERROR: cannot load $plugin"; exit 1; }
+echo "plugin: $plugin"
+pydir=$(sed -n 's/^GRFLOW_PYTHON_INSTALL_DIR:STRING=//p' "$build/CMakeCache.txt")
+PYTHONPATH="$prefix/$pydir${PYTHONPATH:+:$PYTHONPATH}" /usr/bin/python3 -c \
+  "import lammps; l = lammps.lammps(cmdargs=['-log', 'none', '-screen', 'none']); \
+assert l.has_style('pair', 'granular/grflow'); print('python module: lammps', l.version())"
+case "$prefix" in
+  /usr/local) ;;
+  *) echo "NOTE: add $prefix/bin to PATH and $prefix/$pydir to PYTHONPATH" ;;
+esac
+echo "GRFLOW is set up."
