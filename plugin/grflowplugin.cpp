@@ -29,7 +29,8 @@ static Pair *pair_granular_grflow_creator(LAMMPS *lmp)
   return new PairGranularGRFLOW(lmp);
 }
 
-extern "C" void lammpsplugin_init(void *lmp, void *handle, void *regfunc)
+extern "C" __attribute__((visibility("default"))) void lammpsplugin_init(void *lmp, void *handle,
+                                                                          void *regfunc)
 {
   lammpsplugin_t plugin;
   auto register_plugin = (lammpsplugin_regfunc) regfunc;
