@@ -24,6 +24,12 @@
 #include "grflow_contact.h"
 #include "lammps_fixture.h"
 
+#include "atom.h"
+#include "force.h"
+#include "lammps.h"
+#include "neigh_list.h"
+#include "pair.h"
+
 #include <array>
 #include <cstdio>
 
@@ -367,6 +373,109 @@ TEST_F(Packings, ChangingMutKeepsHistory)
   auto mut = (double **) lammps_extract_pair(lmp.handle, "mut");
   ASSERT_NE(mut, nullptr);
   EXPECT_DOUBLE_EQ(mut[1][1], 0.3);
+}
+
+TEST_F(Packings, SingleReproducesForcesAndTorques)
+{
+  // after a sheared run, run 0 recomputes forces from the stored springs without
+  // advancing them, as single() does; summing single()'s per-contact values
+  // (compute pair/local) over each atom's contacts must give its force and torque
+  Lammps lmp;
+  read(lmp, poly);
+  lmp.cmds({"pair_style granular/grflow", "pair_coeff * * 1.0e6 1.15"});
+  drive(lmp);
+  lmp.cmds({"run 1000", "compute pl all pair/local dist dx dy dz p1 p2 p3 p5 p6 p7 p9 p11",
+            "compute ids all property/local patom1 patom2", "run 0"});
+  const int n = lmp.natoms();
+  const int nrows = (int) *(int *) lammps_extract_compute(lmp.handle, "pl", LMP_STYLE_LOCAL,
+                                                          LMP_SIZE_ROWS);
+  auto pl = (double **) lammps_extract_compute(lmp.handle, "pl", LMP_STYLE_LOCAL, LMP_TYPE_ARRAY);
+  auto ids = (double **) lammps_extract_compute(lmp.handle, "ids", LMP_STYLE_LOCAL, LMP_TYPE_ARRAY);
+  ASSERT_GT(nrows, n);
+  ASSERT_EQ(nrows, *(int *) lammps_extract_compute(lmp.handle, "ids", LMP_STYLE_LOCAL,
+                                                    LMP_SIZE_ROWS));
+  const auto radius = (double *) lammps_extract_atom(lmp.handle, "radius");
+  const auto tag = (int *) lammps_extract_atom(lmp.handle, "id");
+  std::vector<double> rad(n + 1);
+  for (int k = 0; k < n; k++) rad[tag[k]] = radius[k];
+
+  std::vector<double> f(3 * n, 0.0), t(3 * n, 0.0);
+  int contacts = 0, sliding = 0, rolling = 0, twisting = 0;
+  for (int row = 0; row < nrows; row++) {
+    const double *q = pl[row];
+    // single() is evaluated for (i = patom1, j = patom2); pair/local turns
+    // dx,dy,dz to point from the higher to the lower atom ID: undo that
+    const int i = (int) ids[row][0], j = (int) ids[row][1];
+    const double sgn = i > j ? -1.0 : 1.0;
+    const double r = q[0], del[3] = {sgn * q[1], sgn * q[2], sgn * q[3]};
+    const double fn = q[11], ft[3] = {q[4], q[5], q[6]}, fr[3] = {q[7], q[8], q[9]}, fo = q[10];
+    if (r >= rad[i] + rad[j]) continue;
+    contacts++;
+    sliding += ft[0] != 0.0;
+    rolling += fr[0] != 0.0;
+    twisting += fo != 0.0;
+    const double n_[3] = {del[0] / r, del[1] / r, del[2] / r};
+    const double delta = rad[i] + rad[j] - r, reff = rad[i] * rad[j] / (rad[i] + rad[j]);
+    double nxft[3], nxfr[3];
+    cross3(n_, ft, nxft);
+    cross3(n_, fr, nxfr);
+    for (int k = 0; k < 3; k++) {
+      const double fk = fn * n_[k] + ft[k];
+      const double tc = reff * (nxfr[k] + fo * n_[k]);
+      f[3 * (i - 1) + k] += fk;
+      f[3 * (j - 1) + k] -= fk;
+      t[3 * (i - 1) + k] += -(rad[i] - 0.5 * delta) * nxft[k] + tc;
+      t[3 * (j - 1) + k] += -(rad[j] - 0.5 * delta) * nxft[k] - tc;
+    }
+  }
+  EXPECT_GT(sliding, contacts / 2);
+  EXPECT_GT(rolling, contacts / 2);
+  EXPECT_GT(twisting, contacts / 2);
+  EXPECT_LT(measured("single() force sums vs f", max_rel_diff(f, lmp.gather3("f"))), 1.0e-12);
+  EXPECT_LT(measured("single() torque sums vs torque", max_rel_diff(t, lmp.gather3("torque"))),
+            1.0e-12);
+}
+
+TEST_F(Packings, SingleSeesPairFromEitherSide)
+{
+  // single(j,i) finds the history stored with i and transforms it: sliding
+  // force negated; rolling, torsion and normal force the same
+  Lammps lmp;
+  read(lmp, poly);
+  lmp.cmds({"pair_style granular/grflow", "pair_coeff * * 1.0e6 1.15"});
+  drive(lmp);
+  lmp.cmd("run 1000");
+  auto *lammps = (LAMMPS_NS::LAMMPS *) lmp.handle;
+  LAMMPS_NS::Pair *pair = lammps->force->pair;
+  LAMMPS_NS::NeighList *list = pair->list;
+  const int nlocal = lammps->atom->nlocal;
+  double **x = lammps->atom->x;
+  const int *type = lammps->atom->type;
+  int checked = 0;
+  double worst = 0.0;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = list->firstneigh[i][jj] & NEIGHMASK;
+      if (j >= nlocal) continue;
+      const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
+      const double rsq = dot3(del, del);
+      double fij, fji, a[11], b[11];
+      pair->single(i, j, type[i], type[j], rsq, 1.0, 1.0, fij);
+      std::copy(pair->svector, pair->svector + 11, a);
+      pair->single(j, i, type[j], type[i], rsq, 1.0, 1.0, fji);
+      std::copy(pair->svector, pair->svector + 11, b);
+      if (a[10] == 0.0) continue;
+      checked++;
+      const double scale = a[10];
+      for (int k = 0; k < 3; k++) worst = std::max(worst, std::fabs(a[k] + b[k]) / scale);
+      for (int k = 4; k < 11; k++) worst = std::max(worst, std::fabs(a[k] - b[k]) / scale);
+      worst = std::max(worst, std::fabs(fij - fji) / std::fabs(fij));
+      EXPECT_NE(a[3], 0.0);    // springs really stored
+    }
+  }
+  EXPECT_GT(checked, 100);
+  EXPECT_LT(measured("single(j,i) vs single(i,j)", worst), 1.0e-13);
 }
 
 // stock pair granular, set as in shared/notes/contact-law.md

@@ -530,40 +530,67 @@ double PairGranularGRFLOW::single(int i, int j, int itype, int jtype, double rsq
   double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
   const double r = sqrt(rsq);
 
-  // history of this pair: search I's neighbors for J, starting after the
-  // previous hit, since callers usually walk the list in order
+  // history of this pair: stored with I or, when the caller's list has the
+  // pair the other way round (e.g. an occasional list built later), with J
+  // and then seen through transfer_history()
 
-  double zero_history[HIST_SIZE] = {0.0};
-  double *hist = zero_history;
-  const int jnum = list->numneigh[i];
-  const int *jlist = list->firstneigh[i];
-  for (int jj = 0; jj < jnum; jj++) {
-    neighprev++;
-    if (neighprev >= jnum) neighprev = 0;
-    if ((jlist[neighprev] & NEIGHMASK) == j) {
-      hist = &fix_history->firstvalue[i][HIST_SIZE * neighprev];
-      break;
-    }
-  }
+  double history[HIST_SIZE];
+  find_history(i, j, history);
+  const double *hist = history;
 
   ContactGeometry g;
   ContactForces out;
   pair_geometry(del, r, radi, radj, full_arm != 0, g);
   const double vrel[3] = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
   const ContactCoeffs &c = packed[itype][jtype];
-  contact_forces(c, g, vrel, omega[i], omega[j], dt, false, hist, out);
+  contact_forces(c, g, vrel, omega[i], omega[j], dt, false, history, out);
 
+  // same layout as stock pair granular: sliding force on i first, so that
+  // computes can read the tangential force from svector[0-2] for all styles
   fforce = factor_lj * out.fn / r;
-  svector[0] = factor_lj * out.fn;
-  svector[1] = factor_lj * sqrt(dot3(out.ft, out.ft));
-  svector[2] = factor_lj * sqrt(dot3(out.fr, out.fr));
-  svector[3] = factor_lj * fabs(out.fo);
   for (int k = 0; k < 3; k++) {
-    svector[4 + k] = factor_lj * out.ft[k];
-    svector[7 + k] = factor_lj * out.fr[k];
+    svector[k] = factor_lj * out.ft[k];
+    svector[4 + k] = factor_lj * out.fr[k];
   }
-  svector[10] = factor_lj * out.fo;
+  svector[3] = factor_lj * sqrt(dot3(out.ft, out.ft));
+  svector[7] = factor_lj * sqrt(dot3(out.fr, out.fr));
+  svector[8] = factor_lj * out.fo;
+  svector[9] = factor_lj * fabs(out.fo);
+  svector[10] = factor_lj * out.fn;
   return factor_lj * elastic_energy(c, g.delta, hist);
+}
+
+/* ----------------------------------------------------------------------
+   copy the history of pair I,J as seen from I into hist; zero if the pair
+   is not in I's neighbors nor (for an owned J) J's neighbors
+------------------------------------------------------------------------- */
+
+void PairGranularGRFLOW::find_history(int i, int j, double *hist)
+{
+  for (int k = 0; k < HIST_SIZE; k++) hist[k] = 0.0;
+  if (!list || !fix_history || !fix_history->firstvalue) return;
+
+  // search I's neighbors, starting after the previous hit, since callers
+  // usually walk a list in the same order
+  const int jnum = list->numneigh[i];
+  const int *jlist = list->firstneigh[i];
+  for (int jj = 0; jj < jnum; jj++) {
+    if (++neighprev >= jnum) neighprev = 0;
+    if ((jlist[neighprev] & NEIGHMASK) == j) {
+      const double *h = &fix_history->firstvalue[i][HIST_SIZE * neighprev];
+      for (int k = 0; k < HIST_SIZE; k++) hist[k] = h[k];
+      return;
+    }
+  }
+  if (j >= atom->nlocal) return;
+  const int inum = list->numneigh[j];
+  const int *ilist = list->firstneigh[j];
+  for (int ii = 0; ii < inum; ii++)
+    if ((ilist[ii] & NEIGHMASK) == i) {
+      const double *h = &fix_history->firstvalue[j][HIST_SIZE * ii];
+      for (int k = 0; k < HIST_SIZE; k++) hist[k] = HISTORY_SWAP_FACTOR[k] * h[k];
+      return;
+    }
 }
 
 /* ----------------------------------------------------------------------

@@ -73,6 +73,7 @@ class PairGranularGRFLOW : public Pair {
 
   void allocate();
   void write_coeffs(FILE *, int, int, bool);
+  void find_history(int, int, double *);
 };
 
 }    // namespace LAMMPS_NS
