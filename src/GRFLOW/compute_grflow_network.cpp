@@ -1,0 +1,461 @@
+// clang-format off
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+// clang-format on
+
+/* ----------------------------------------------------------------------
+   Contributing authors: GRFLOW developers
+
+   Stress (from contact forces), coordination, connectivity and fabric
+   anisotropy of the particles in a sub-volume, after Eqs. (1)-(3) of
+   "Geometrical network of granular materials under isochoric cyclic
+   shearing".  Contacts are taken from the pair style's own neighbor list
+   through Pair::single(), so that the stored contact history is used.
+------------------------------------------------------------------------- */
+
+#include "compute_grflow_network.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "input.h"
+#include "memory.h"
+#include "neigh_list.h"
+#include "pair.h"
+#include "region.h"
+#include "update.h"
+#include "variable.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+enum { INSIDE, NCONTACTS };
+
+/* ---------------------------------------------------------------------- */
+
+ComputeGRFLOWNetwork::ComputeGRFLOWNetwork(LAMMPS *lmp, int narg, char **arg) :
+    Compute(lmp, narg, arg), zlo_str(nullptr), zhi_str(nullptr), idregion(nullptr),
+    region(nullptr), volume_str(nullptr), inside(nullptr), ncontact(nullptr)
+{
+  cmax = 12;
+  tau_a = 0;
+  tau_b = 2;
+  slab = 0.8;
+  p0 = 0.0;
+  p0flag = p0first = 0;
+  nmax = 0;
+  commflag = INSIDE;
+
+  int iarg = 3;
+  while (iarg < narg) {
+    const std::string kw = arg[iarg];
+    const std::string cmd = "compute grflow/network " + kw;
+    if (kw == "region") {
+      if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, cmd, error);
+      delete[] idregion;
+      idregion = utils::strdup(arg[iarg + 1]);
+      if (!domain->get_region_by_id(idregion))
+        error->all(FLERR, "Region {} for compute grflow/network does not exist", idregion);
+      iarg += 2;
+    } else if (kw == "slab") {
+      if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, cmd, error);
+      slab = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (slab <= 0.0 || slab > 1.0)
+        error->all(FLERR, "Compute grflow/network slab must be in (0,1], got {}", slab);
+      iarg += 2;
+    } else if (kw == "zlimits") {
+      if (iarg + 3 > narg) utils::missing_cmd_args(FLERR, cmd, error);
+      delete[] zlo_str;
+      delete[] zhi_str;
+      zlo_str = utils::strdup(arg[iarg + 1]);
+      zhi_str = utils::strdup(arg[iarg + 2]);
+      iarg += 3;
+    } else if (kw == "volume") {
+      if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, cmd, error);
+      delete[] volume_str;
+      volume_str = utils::strdup(arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "shear") {
+      if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, cmd, error);
+      const std::string c = arg[iarg + 1];
+      const int a = c.size() == 2 ? c[0] - 'x' : -1;
+      const int b = c.size() == 2 ? c[1] - 'x' : -1;
+      if (a < 0 || a > 2 || b < 0 || b > 2 || a == b)
+        error->all(FLERR, "Compute grflow/network shear must be two different axes "
+                   "(xy, xz, yz, ...), got {}", c);
+      tau_a = a;
+      tau_b = b;
+      iarg += 2;
+    } else if (kw == "p0") {
+      if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, cmd, error);
+      if (strcmp(arg[iarg + 1], "first") == 0) {
+        p0first = 1;
+        p0flag = 0;
+      } else {
+        p0 = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+        if (p0 <= 0.0) error->all(FLERR, "Compute grflow/network p0 must be > 0, got {}", p0);
+        p0flag = 1;
+        p0first = 0;
+      }
+      iarg += 2;
+    } else if (kw == "cmax") {
+      if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, cmd, error);
+      cmax = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (cmax < 1 || cmax > 100)
+        error->all(FLERR, "Compute grflow/network cmax must be in 1..100, got {}", cmax);
+      iarg += 2;
+    } else {
+      error->all(FLERR, "Unknown compute grflow/network keyword: {}", kw);
+    }
+  }
+
+  if (idregion && zlo_str)
+    error->all(FLERR, "Compute grflow/network: use either region or zlimits, not both");
+  if (!idregion && volume_str)
+    error->all(FLERR, "Compute grflow/network volume goes with region (the slab volume is known)");
+
+  // check numbers now, variables at init()
+  for (const char *s : {zlo_str, zhi_str, volume_str})
+    if (s && strncmp(s, "v_", 2) != 0) utils::numeric(FLERR, s, false, lmp);
+
+  if (!atom->radius_flag)
+    error->all(FLERR, "Compute grflow/network requires atom attribute radius (atom_style sphere)");
+
+  vector_flag = 1;
+  size_vector = PC0 + cmax + 1;
+  extvector = 0;
+  vector = new double[size_vector];
+  for (int k = 0; k < size_vector; k++) vector[k] = 0.0;
+
+  comm_forward = 1;
+  comm_reverse = 1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+ComputeGRFLOWNetwork::~ComputeGRFLOWNetwork()
+{
+  delete[] vector;
+  delete[] zlo_str;
+  delete[] zhi_str;
+  delete[] idregion;
+  delete[] volume_str;
+  memory->destroy(inside);
+  memory->destroy(ncontact);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeGRFLOWNetwork::init()
+{
+  Pair *pair = force->pair;
+  if (!pair) error->all(FLERR, "Compute grflow/network requires a pair style");
+  if (!pair->single_enable || !pair->finitecutflag || !pair->svector || pair->single_extra < 3)
+    error->all(FLERR, "Compute grflow/network requires a granular pair style with single() "
+               "giving the sliding force in svector[0-2] (granular/grflow, granular, gran/*), "
+               "not {}", force->pair_style);
+
+  if (idregion) {
+    region = domain->get_region_by_id(idregion);
+    if (!region) error->all(FLERR, "Region {} for compute grflow/network does not exist", idregion);
+    if (!volume_str && (strcmp(region->style, "block") != 0 || !region->interior))
+      error->all(FLERR, "Compute grflow/network region {} is not an inside block: give its "
+                 "volume with the volume keyword", idregion);
+  }
+  for (const char *s : {zlo_str, zhi_str, volume_str}) {
+    if (!s || strncmp(s, "v_", 2) != 0) continue;
+    const int ivar = input->variable->find(s + 2);
+    if (ivar < 0) error->all(FLERR, "Variable {} for compute grflow/network does not exist", s + 2);
+    if (!input->variable->equalstyle(ivar))
+      error->all(FLERR, "Variable {} for compute grflow/network is not equal-style", s + 2);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   value of a number or v_name argument
+------------------------------------------------------------------------- */
+
+double ComputeGRFLOWNetwork::eval(const char *str, const char *what)
+{
+  if (strncmp(str, "v_", 2) != 0) return utils::numeric(FLERR, str, false, lmp);
+  const int ivar = input->variable->find(str + 2);
+  if (ivar < 0)
+    error->all(FLERR, "Variable {} for compute grflow/network {} does not exist", str + 2, what);
+  return input->variable->compute_equal(ivar);
+}
+
+/* ----------------------------------------------------------------------
+   flag owned atoms in the group and the sub-volume; return its volume
+------------------------------------------------------------------------- */
+
+void ComputeGRFLOWNetwork::set_inside(double &volume)
+{
+  double **x = atom->x;
+  const int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+
+  if (region) {
+    region->prematch();
+    if (volume_str) {
+      volume = eval(volume_str, "volume");
+    } else {
+      const double lo[3] = {MAX(region->extent_xlo, domain->boxlo[0]),
+                            MAX(region->extent_ylo, domain->boxlo[1]),
+                            MAX(region->extent_zlo, domain->boxlo[2])};
+      const double hi[3] = {MIN(region->extent_xhi, domain->boxhi[0]),
+                            MIN(region->extent_yhi, domain->boxhi[1]),
+                            MIN(region->extent_zhi, domain->boxhi[2])};
+      volume = MAX(hi[0] - lo[0], 0.0) * MAX(hi[1] - lo[1], 0.0) * MAX(hi[2] - lo[2], 0.0);
+    }
+    for (int i = 0; i < nlocal; i++)
+      inside[i] = ((mask[i] & groupbit) && region->match(x[i][0], x[i][1], x[i][2])) ? 1.0 : 0.0;
+  } else {
+    const double zlo = zlo_str ? eval(zlo_str, "zlimits") : domain->boxlo[2];
+    const double zhi = zhi_str ? eval(zhi_str, "zlimits") : domain->boxhi[2];
+    if (zhi <= zlo)
+      error->all(FLERR, "Compute grflow/network zlimits must have zlo < zhi, got {} {}", zlo, zhi);
+    const double half = 0.5 * slab * (zhi - zlo);
+    const double zmid = 0.5 * (zlo + zhi);
+    const double lo = zmid - half, hi = zmid + half;
+    volume = domain->xprd * domain->yprd * (hi - lo);
+    for (int i = 0; i < nlocal; i++)
+      inside[i] = ((mask[i] & groupbit) && x[i][2] >= lo && x[i][2] < hi) ? 1.0 : 0.0;
+  }
+  if (volume <= 0.0)
+    error->all(FLERR, "Compute grflow/network sub-volume is {}: must be > 0", volume);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeGRFLOWNetwork::compute_vector()
+{
+  invoked_vector = update->ntimestep;
+
+  Pair *pair = force->pair;
+  NeighList *list = pair->list;
+  if (!list || !list->numneigh)
+    error->all(FLERR, "Compute grflow/network needs the pair style's neighbor list: "
+               "use it after a run (run 0 will do)");
+
+  if (atom->nmax > nmax) {
+    memory->destroy(inside);
+    memory->destroy(ncontact);
+    nmax = atom->nmax;
+    memory->create(inside, nmax, "grflow/network:inside");
+    memory->create(ncontact, nmax, "grflow/network:ncontact");
+  }
+
+  double volume = 0.0;
+  set_inside(volume);
+  commflag = INSIDE;
+  comm->forward_comm(this);
+
+  const int nlocal = atom->nlocal;
+  const int nall = nlocal + atom->nghost;
+  for (int i = 0; i < nall; i++) ncontact[i] = 0.0;
+
+  double **x = atom->x;
+  const double *radius = atom->radius;
+  const int *type = atom->type;
+  const int newton_pair = force->newton_pair;
+  const double *special_lj = force->special_lj;
+  const double *svector = pair->svector;
+
+  // per contact: the end of each particle inside contributes its arm to the
+  // stress (a - delta/2) n (x) f, f = force on i, and n (x) n to the fabric
+
+  double sig[3][3] = {{0.0}}, fab[3][3] = {{0.0}};
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    const int *jlist = list->firstneigh[i];
+    const int jnum = list->numneigh[i];
+    for (int jj = 0; jj < jnum; jj++) {
+      int j = jlist[jj];
+      const double factor_lj = special_lj[sbmask(j)];
+      j &= NEIGHMASK;
+      if (factor_lj == 0.0) continue;
+
+      // with newton off a pair with a ghost is listed by both owners:
+      // each side counts only its own particle
+      const bool use_i = inside[i] > 0.0;
+      const bool use_j = inside[j] > 0.0 && (j < nlocal || newton_pair);
+      if (!use_i && !use_j) continue;
+
+      const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
+      const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
+      const double radsum = radius[i] + radius[j];
+      if (rsq >= radsum * radsum) continue;
+
+      double fpair = 0.0;
+      pair->single(i, j, type[i], type[j], rsq, 1.0, factor_lj, fpair);
+      if (fpair <= 0.0) continue;    // touching but carrying no normal force
+
+      const double r = sqrt(rsq);
+      const double n[3] = {del[0] / r, del[1] / r, del[2] / r};
+      const double f[3] = {fpair * del[0] + svector[0], fpair * del[1] + svector[1],
+                           fpair * del[2] + svector[2]};
+      const double half = 0.5 * (radsum - r);
+      double arm = 0.0;
+      if (use_i) {
+        ncontact[i] += 1.0;
+        arm += radius[i] - half;
+      }
+      if (use_j) {
+        ncontact[j] += 1.0;
+        arm += radius[j] - half;
+      }
+      const double ends = (use_i ? 1.0 : 0.0) + (use_j ? 1.0 : 0.0);
+      for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 3; b++) {
+          sig[a][b] += arm * n[a] * f[b];
+          fab[a][b] += ends * n[a] * n[b];
+        }
+    }
+  }
+
+  if (newton_pair) {
+    commflag = NCONTACTS;
+    comm->reverse_comm(this);
+  }
+
+  // per particle: counts and the histogram of contact numbers
+
+  const int nbin = cmax + 1;
+  const int nlocal_sums = 9 + 9 + 3 + nbin;
+  double *local = new double[nlocal_sums]();
+  for (int a = 0; a < 3; a++)
+    for (int b = 0; b < 3; b++) {
+      local[3 * a + b] = sig[a][b];
+      local[9 + 3 * a + b] = fab[a][b];
+    }
+  for (int i = 0; i < nlocal; i++) {
+    if (inside[i] <= 0.0) continue;
+    const int c = (int) ncontact[i];
+    local[18] += 1.0;
+    if (c == 0) local[19] += 1.0;
+    local[20] += c;
+    local[21 + MIN(c, cmax)] += 1.0;
+  }
+  double *total = new double[nlocal_sums];
+  MPI_Allreduce(local, total, nlocal_sums, MPI_DOUBLE, MPI_SUM, world);
+
+  double s[3][3], sym[3][3], fabric[3][3];
+  for (int a = 0; a < 3; a++)
+    for (int b = 0; b < 3; b++) {
+      s[a][b] = total[3 * a + b] / volume;
+      fabric[a][b] = total[9 + 3 * a + b];
+    }
+  const double np = total[18], nfloat = total[19], csum = total[20];
+
+  // stress: LAMMPS order and convention (compression positive,
+  // sigma_ab = sum l_a f_b / V); derived values use the symmetric part
+
+  vector[SXX] = s[0][0];
+  vector[SYY] = s[1][1];
+  vector[SZZ] = s[2][2];
+  vector[SXY] = s[0][1];
+  vector[SXZ] = s[0][2];
+  vector[SYZ] = s[1][2];
+  const double p = (s[0][0] + s[1][1] + s[2][2]) / 3.0;
+  double ss = 0.0;
+  for (int a = 0; a < 3; a++)
+    for (int b = 0; b < 3; b++) {
+      sym[a][b] = 0.5 * (s[a][b] + s[b][a]) - (a == b ? p : 0.0);    // deviatoric
+      ss += sym[a][b] * sym[a][b];
+    }
+  vector[PRESS] = p;
+  vector[TAU] = -0.5 * (s[tau_a][tau_b] + s[tau_b][tau_a]);
+  vector[QDEV] = sqrt(1.5 * ss);
+  vector[SNORM] = sqrt(ss);
+  if (p0first && !p0flag && np > 0.0) set_p0(p);
+  vector[RU] = p0flag ? 1.0 - p / p0 : 0.0;
+
+  // contacts
+
+  vector[NP] = np;
+  vector[NFLOAT] = nfloat;
+  vector[NCONTACT] = 0.5 * csum;
+  vector[ZG] = (np - nfloat > 0.0) ? csum / (np - nfloat) : 0.0;
+  vector[ZPLAIN] = (np > 0.0) ? csum / np : 0.0;
+
+  // fabric F = <n n> over contact ends, a = 15/2 dev F,
+  // a_c = sign(a:s) sqrt(3/2 a:a)
+
+  double an[3][3], aa = 0.0, as = 0.0;
+  for (int a = 0; a < 3; a++)
+    for (int b = 0; b < 3; b++) {
+      const double fn = (csum > 0.0) ? fabric[a][b] / csum : 0.0;
+      an[a][b] = (csum > 0.0) ? 7.5 * (fn - (a == b ? 1.0 / 3.0 : 0.0)) : 0.0;
+    }
+  for (int a = 0; a < 3; a++)
+    for (int b = 0; b < 3; b++) {
+      aa += an[a][b] * an[a][b];
+      as += an[a][b] * sym[a][b];
+    }
+  const double sc = (aa > 0.0 && ss > 0.0) ? as / (sqrt(aa) * sqrt(ss)) : 0.0;
+  vector[SC] = sc;
+  vector[AC] = (sc < 0.0 ? -1.0 : 1.0) * sqrt(1.5 * aa);
+  vector[AXX] = an[0][0];
+  vector[AYY] = an[1][1];
+  vector[AZZ] = an[2][2];
+  vector[AXY] = an[0][1];
+  vector[AXZ] = an[0][2];
+  vector[AYZ] = an[1][2];
+  vector[VOLUME] = volume;
+  for (int c = 0; c < nbin; c++) vector[PC0 + c] = (np > 0.0) ? total[21 + c] / np : 0.0;
+
+  delete[] local;
+  delete[] total;
+}
+
+/* ---------------------------------------------------------------------- */
+
+int ComputeGRFLOWNetwork::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/,
+                                            int * /*pbc*/)
+{
+  for (int i = 0; i < n; i++) buf[i] = inside[list[i]];
+  return n;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeGRFLOWNetwork::unpack_forward_comm(int n, int first, double *buf)
+{
+  for (int i = 0; i < n; i++) inside[first + i] = buf[i];
+}
+
+/* ---------------------------------------------------------------------- */
+
+int ComputeGRFLOWNetwork::pack_reverse_comm(int n, int first, double *buf)
+{
+  for (int i = 0; i < n; i++) buf[i] = ncontact[first + i];
+  return n;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeGRFLOWNetwork::unpack_reverse_comm(int n, int *list, double *buf)
+{
+  for (int i = 0; i < n; i++) ncontact[list[i]] += buf[i];
+}
+
+/* ---------------------------------------------------------------------- */
+
+double ComputeGRFLOWNetwork::memory_usage()
+{
+  return 2.0 * nmax * sizeof(double);
+}
