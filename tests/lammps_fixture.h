@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <unistd.h>
 #include <string>
 #include <vector>
 
@@ -112,6 +113,13 @@ inline std::string fmt_double(double value)
   return buf;
 }
 
+// a file in the test work directory, private to this process: ctest may run
+// several test programs at once, and they must not share files
+inline std::string workfile(const std::string &name)
+{
+  return std::string(GRFLOW_TEST_WORKDIR) + "/" + std::to_string((long) getpid()) + "_" + name;
+}
+
 // path of a deck or data file known to the build
 inline std::string deck(const std::string &name)
 {
@@ -122,7 +130,7 @@ inline std::string deck(const std::string &name)
 inline std::string make_packing(const std::string &tag, int nside, double dmin, double dmax,
                                 double phi)
 {
-  const std::string out = std::string(GRFLOW_TEST_WORKDIR) + "/packing_" + tag + ".data";
+  const std::string out = workfile("packing_" + tag + ".data");
   Lammps lmp;
   lmp.cmds({"units si", "atom_style sphere", "variable nside equal " + std::to_string(nside),
             "variable seed equal 4321", "variable dmin equal " + fmt_double(dmin),
