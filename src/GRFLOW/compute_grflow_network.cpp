@@ -162,6 +162,17 @@ ComputeGRFLOWNetwork::~ComputeGRFLOWNetwork()
 
 void ComputeGRFLOWNetwork::init()
 {
+  check_setup();
+}
+
+/* ----------------------------------------------------------------------
+   pair style, region and variables; done at init() and again by
+   compute_vector(), which the library interface can call on a compute
+   that was defined after the last run and never initialized
+------------------------------------------------------------------------- */
+
+void ComputeGRFLOWNetwork::check_setup()
+{
   Pair *pair = force->pair;
   if (!pair) error->all(FLERR, "Compute grflow/network requires a pair style");
   if (!pair->single_enable || !pair->finitecutflag || !pair->svector || pair->single_extra < 3)
@@ -232,8 +243,18 @@ void ComputeGRFLOWNetwork::set_inside(double &volume)
     const double zmid = 0.5 * (zlo + zhi);
     const double lo = zmid - half, hi = zmid + half;
     volume = domain->xprd * domain->yprd * (hi - lo);
-    for (int i = 0; i < nlocal; i++)
-      inside[i] = ((mask[i] & groupbit) && x[i][2] >= lo && x[i][2] < hi) ? 1.0 : 0.0;
+    // between reneighborings an atom may be up to half the skin outside a
+    // periodic box: use the image of its centre inside the box
+    const int zperiodic = domain->zperiodic;
+    const double boxlo = domain->boxlo[2], boxhi = domain->boxhi[2], zprd = domain->zprd;
+    for (int i = 0; i < nlocal; i++) {
+      double z = x[i][2];
+      if (zperiodic) {
+        if (z < boxlo) z += zprd;
+        else if (z >= boxhi) z -= zprd;
+      }
+      inside[i] = ((mask[i] & groupbit) && z >= lo && z < hi) ? 1.0 : 0.0;
+    }
   }
   if (volume <= 0.0)
     error->all(FLERR, "Compute grflow/network sub-volume is {}: must be > 0", volume);
@@ -245,6 +266,7 @@ void ComputeGRFLOWNetwork::compute_vector()
 {
   invoked_vector = update->ntimestep;
 
+  check_setup();
   Pair *pair = force->pair;
   NeighList *list = pair->list;
   if (!list || !list->numneigh)
@@ -258,6 +280,13 @@ void ComputeGRFLOWNetwork::compute_vector()
     memory->create(inside, nmax, "grflow/network:inside");
     memory->create(ncontact, nmax, "grflow/network:ncontact");
   }
+
+  // ghosts are refreshed by the integrator before the forces, not after:
+  // at the end of a step their velocities are half a step old and, after
+  // a box change (fix deform), their positions are those of the old box.
+  // Bring positions, velocities and spins up to date, as the pair style
+  // would see them, so that results do not depend on which atoms are ghosts.
+  comm->forward_comm();
 
   double volume = 0.0;
   set_inside(volume);
@@ -381,7 +410,8 @@ void ComputeGRFLOWNetwork::compute_vector()
   vector[TAU] = -0.5 * (s[tau_a][tau_b] + s[tau_b][tau_a]);
   vector[QDEV] = sqrt(1.5 * ss);
   vector[SNORM] = sqrt(ss);
-  if (p0first && !p0flag && np > 0.0) set_p0(p);
+  // p0 first: the first positive pressure (r_u = 1 - p/p0 needs p0 > 0)
+  if (p0first && !p0flag && p > 0.0) set_p0(p);
   vector[RU] = p0flag ? 1.0 - p / p0 : 0.0;
 
   // contacts

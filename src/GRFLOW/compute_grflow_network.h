@@ -62,6 +62,7 @@ class ComputeGRFLOWNetwork : public Compute {
   double *ncontact;   // force-bearing contacts per atom
   int commflag;
 
+  void check_setup();
   double eval(const char *, const char *);
   void set_inside(double &volume);
 };
