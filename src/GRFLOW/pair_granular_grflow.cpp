@@ -23,6 +23,8 @@
 
 #include "pair_granular_grflow.h"
 
+#include "grflow_coeffs.h"
+
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
@@ -41,14 +43,6 @@
 
 using namespace LAMMPS_NS;
 using namespace GRFLOW;
-
-// order of the per type pair arrays; also the pair_coeff keywords
-// (kn, cn positional) and the names served by extract()
-
-const char *const PairGranularGRFLOW::param_names[NPARAM] = {"kn",  "cn", "kt", "ct",
-                                                             "mut", "kr", "cr", "mur",
-                                                             "ko",  "co", "muo"};
-enum { KN, CN, KT, CT, MUT, KR, CR, MUR, KO, CO, MUO };
 
 static constexpr int SVECTOR_SIZE = 11;
 
@@ -232,7 +226,7 @@ void PairGranularGRFLOW::allocate()
   for (int i = 0; i < n; i++)
     for (int j = 0; j < n; j++) setflag[i][j] = 0;
   memory->create(cutsq, n, n, "pair:cutsq");
-  for (int k = 0; k < NPARAM; k++) {
+  for (int k = 0; k < NCOEFF; k++) {
     memory->create(param[k], n, n, "pair:param");
     for (int i = 0; i < n; i++)
       for (int j = 0; j < n; j++) param[k][i][j] = 0.0;
@@ -283,49 +277,13 @@ void PairGranularGRFLOW::coeff(int narg, char **arg)
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
 
-  double value[NPARAM];
-  value[KN] = utils::numeric(FLERR, arg[2], false, lmp);
-  value[CN] = utils::numeric(FLERR, arg[3], false, lmp);
-  value[KT] = 0.8 * value[KN];
-  value[CT] = 0.2 * value[CN];
-  value[MUT] = 0.5;
-  value[KR] = 0.1 * value[KN];
-  value[CR] = 0.05 * value[CN];
-  value[MUR] = 0.1;
-  value[KO] = 0.1 * value[KN];
-  value[CO] = 0.05 * value[CN];
-  value[MUO] = 0.1;
-
-  int iarg = 4;
-  while (iarg < narg) {
-    if (iarg + 2 > narg)
-      error->all(FLERR, "Missing value for pair_coeff granular/grflow keyword {}", arg[iarg]);
-    const std::string kw = arg[iarg];
-    if (kw == "rolling" || kw == "torsion") {
-      if (strcmp(arg[iarg + 1], "off") != 0)
-        error->all(FLERR, "pair_coeff granular/grflow {} takes only the value off, not {}", kw,
-                   arg[iarg + 1]);
-      const int first = (kw == "rolling") ? KR : KO;
-      for (int k = first; k < first + 3; k++) value[k] = 0.0;
-    } else {
-      int k = 2;
-      while (k < NPARAM && kw != param_names[k]) k++;
-      if (k == NPARAM) error->all(FLERR, "Unknown pair_coeff granular/grflow keyword: {}", kw);
-      value[k] = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-    }
-    iarg += 2;
-  }
-
-  if (value[KN] <= 0.0) error->all(FLERR, "pair_coeff granular/grflow: kn must be > 0, got {}", value[KN]);
-  for (int k = 1; k < NPARAM; k++)
-    if (value[k] < 0.0 || !std::isfinite(value[k]))
-      error->all(FLERR, "pair_coeff granular/grflow: {} must be >= 0, got {}", param_names[k],
-                 value[k]);
+  double value[NCOEFF];
+  parse_coeffs(lmp, "pair_coeff granular/grflow", narg, arg, 2, false, value);
 
   int count = 0;
   for (int i = ilo; i <= ihi; i++) {
     for (int j = MAX(jlo, i); j <= jhi; j++) {
-      for (int k = 0; k < NPARAM; k++) param[k][i][j] = value[k];
+      for (int k = 0; k < NCOEFF; k++) param[k][i][j] = value[k];
       setflag[i][j] = 1;
       count++;
     }
@@ -395,22 +353,14 @@ void PairGranularGRFLOW::init_style()
 double PairGranularGRFLOW::init_one(int i, int j)
 {
   if (setflag[i][j] == 0)
-    for (int k = 0; k < NPARAM; k++) param[k][i][j] = sqrt(param[k][i][i] * param[k][j][j]);
+    for (int k = 0; k < NCOEFF; k++) param[k][i][j] = sqrt(param[k][i][i] * param[k][j][j]);
 
-  for (int k = 0; k < NPARAM; k++) param[k][j][i] = param[k][i][j];
+  for (int k = 0; k < NCOEFF; k++) param[k][j][i] = param[k][i][j];
 
+  double value[NCOEFF];
+  for (int k = 0; k < NCOEFF; k++) value[k] = param[k][i][j];
   ContactCoeffs &c = packed[i][j];
-  c.kn = param[KN][i][j];
-  c.cn = param[CN][i][j];
-  c.kt = param[KT][i][j];
-  c.ct = param[CT][i][j];
-  c.mut = param[MUT][i][j];
-  c.kr = param[KR][i][j];
-  c.cr = param[CR][i][j];
-  c.mur = param[MUR][i][j];
-  c.ko = param[KO][i][j];
-  c.co = param[CO][i][j];
-  c.muo = param[MUO][i][j];
+  pack_coeffs(value, c);
   packed[j][i] = c;
 
   // contact range: sum of the largest radii of the two types
@@ -428,7 +378,7 @@ void PairGranularGRFLOW::write_restart(FILE *fp)
     for (int j = i; j <= atom->ntypes; j++) {
       fwrite(&setflag[i][j], sizeof(int), 1, fp);
       if (setflag[i][j])
-        for (int k = 0; k < NPARAM; k++) fwrite(&param[k][i][j], sizeof(double), 1, fp);
+        for (int k = 0; k < NCOEFF; k++) fwrite(&param[k][i][j], sizeof(double), 1, fp);
     }
 }
 
@@ -446,7 +396,7 @@ void PairGranularGRFLOW::read_restart(FILE *fp)
       if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
       MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
       if (setflag[i][j]) {
-        for (int k = 0; k < NPARAM; k++) {
+        for (int k = 0; k < NCOEFF; k++) {
           if (me == 0) utils::sfread(FLERR, &param[k][i][j], sizeof(double), 1, fp, nullptr, error);
           MPI_Bcast(&param[k][i][j], 1, MPI_DOUBLE, 0, world);
         }
@@ -480,7 +430,7 @@ void PairGranularGRFLOW::write_coeffs(FILE *fp, int i, int j, bool both)
   else
     fprintf(fp, "%d", i);
   fprintf(fp, " %.17g %.17g", param[KN][i][j], param[CN][i][j]);
-  for (int k = KT; k < NPARAM; k++) fprintf(fp, " %s %.17g", param_names[k], param[k][i][j]);
+  for (int k = KT; k < NCOEFF; k++) fprintf(fp, " %s %.17g", COEFF_NAMES[k], param[k][i][j]);
   fprintf(fp, "\n");
 }
 
@@ -600,8 +550,8 @@ void PairGranularGRFLOW::find_history(int i, int j, double *hist)
 void *PairGranularGRFLOW::extract(const char *str, int &dim)
 {
   dim = 2;
-  for (int k = 0; k < NPARAM; k++)
-    if (strcmp(str, param_names[k]) == 0) return (void *) param[k];
+  for (int k = 0; k < NCOEFF; k++)
+    if (strcmp(str, COEFF_NAMES[k]) == 0) return (void *) param[k];
   return nullptr;
 }
 
@@ -621,7 +571,7 @@ void PairGranularGRFLOW::transfer_history(double *source, double *target, int /*
 double PairGranularGRFLOW::memory_usage()
 {
   const double n = atom->ntypes + 1;
-  return n * n * (NPARAM * sizeof(double) + sizeof(ContactCoeffs));
+  return n * n * (NCOEFF * sizeof(double) + sizeof(ContactCoeffs));
 }
 
 /* ----------------------------------------------------------------------

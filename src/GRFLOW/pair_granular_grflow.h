@@ -20,7 +20,7 @@ PairStyle(granular/grflow,PairGranularGRFLOW);
 #ifndef LMP_PAIR_GRANULAR_GRFLOW_H
 #define LMP_PAIR_GRANULAR_GRFLOW_H
 
-#include "grflow_contact.h"
+#include "grflow_coeffs.h"
 #include "pair.h"
 
 namespace LAMMPS_NS {
@@ -52,16 +52,13 @@ class PairGranularGRFLOW : public Pair {
   // the coefficients of one type pair, as used by the kernel
   const GRFLOW::ContactCoeffs &coeffs(int itype, int jtype) const { return packed[itype][jtype]; }
 
-  enum { NPARAM = 11 };
-  static const char *const param_names[NPARAM];
-
  protected:
   double dt;
   int full_arm;    // 1: contact-point velocity with full radii (stock compatible)
 
-  // user-facing per type pair coefficients, one array per name in param_names,
+  // user-facing per type pair coefficients, one array per name in COEFF_NAMES,
   // (changed by pair_coeff or fix adapt) and their packed copy for the kernel
-  double **param[NPARAM];
+  double **param[GRFLOW::NCOEFF];
   GRFLOW::ContactCoeffs **packed;
 
   double *onerad_dynamic, *maxrad_dynamic;
