@@ -29,9 +29,11 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix_grflow_wall.h"
 #include "force.h"
 #include "input.h"
 #include "memory.h"
+#include "modify.h"
 #include "neigh_list.h"
 #include "pair.h"
 #include "region.h"
@@ -187,6 +189,10 @@ void ComputeGRFLOWNetwork::check_setup()
       error->all(FLERR, "Compute grflow/network region {} is not an inside block: give its "
                  "volume with the volume keyword", idregion);
   }
+  walls.clear();
+  for (auto *ifix : modify->get_fix_by_style("^grflow/wall$"))
+    walls.push_back(dynamic_cast<FixGRFLOWWall *>(ifix));
+
   for (const char *s : {zlo_str, zhi_str, volume_str}) {
     if (!s || strncmp(s, "v_", 2) != 0) continue;
     const int ivar = input->variable->find(s + 2);
@@ -360,6 +366,23 @@ void ComputeGRFLOWNetwork::compute_vector()
     commflag = NCONTACTS;
     comm->reverse_comm(this);
   }
+
+  // contacts of owned particles with GRFLOW walls (force-bearing ones are
+  // recorded by the wall fix on this step): n is the wall normal
+
+  for (auto *wfix : walls)
+    for (int i = 0; i < nlocal; i++) {
+      if (inside[i] <= 0.0) continue;
+      for (int w = 0; w < FixGRFLOWWall::NWALL; w++) {
+        const double arm = wfix->contact_arm(i, w);
+        if (arm <= 0.0) continue;
+        const double *fw = wfix->contact_force(i, w);
+        const double nz = wfix->normal_sign(w);
+        ncontact[i] += 1.0;
+        for (int b = 0; b < 3; b++) sig[2][b] += arm * nz * fw[b];
+        fab[2][2] += 1.0;
+      }
+    }
 
   // per particle: counts and the histogram of contact numbers
 

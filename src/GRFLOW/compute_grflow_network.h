@@ -22,6 +22,8 @@ ComputeStyle(grflow/network,ComputeGRFLOWNetwork);
 
 #include "compute.h"
 
+#include <vector>
+
 namespace LAMMPS_NS {
 
 class ComputeGRFLOWNetwork : public Compute {
@@ -56,6 +58,8 @@ class ComputeGRFLOWNetwork : public Compute {
   char *volume_str;            // volume of a non-block region: number or v_name
   double p0;
   int p0flag, p0first;
+
+  std::vector<class FixGRFLOWWall *> walls;
 
   int nmax;
   double *inside;     // 1 if the atom is in the group and the sub-volume

@@ -1,0 +1,431 @@
+// clang-format off
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+// clang-format on
+
+/* ----------------------------------------------------------------------
+   Contributing authors: GRFLOW developers
+
+   Flat, frictional walls normal to z at the bottom (lo) and/or top (hi) of
+   the box, interacting with spheres by the GRFLOW contact law with the
+   wall as a sphere of infinite radius: a' = a_i, the wall does not spin.
+   The walls move with velocities set by fix_modify (or by other GRFLOW
+   fixes); their positions, velocities and displacements and the contact
+   history go to restart files.
+------------------------------------------------------------------------- */
+
+#include "fix_grflow_wall.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "memory.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace GRFLOW;
+using namespace FixConst;
+
+static constexpr int NHIST = FixGRFLOWWall::NWALL * HIST_SIZE;
+static constexpr int NCONTACT = FixGRFLOWWall::NWALL * 4;
+static constexpr int NVECTOR = 6;    // per wall: Fx Fy Fz z dx dy
+
+/* ---------------------------------------------------------------------- */
+
+FixGRFLOWWall::FixGRFLOWWall(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), history(nullptr), contact(nullptr)
+{
+  if (!atom->radius_flag || !atom->omega_flag || !atom->torque_flag)
+    error->all(FLERR, "Fix grflow/wall requires atom attributes radius, omega and torque "
+               "(atom_style sphere)");
+
+  int iarg = parse_coeffs(lmp, "fix grflow/wall", narg, arg, 3, true, coeff_value);
+  pack_coeffs(coeff_value, coeff);
+
+  full_arm = 0;
+  for (auto &w : walls) {
+    w.active = 0;
+    w.z = 0.0;
+    w.v[0] = w.v[1] = w.v[2] = 0.0;
+    w.disp[0] = w.disp[1] = 0.0;
+    w.force[0] = w.force[1] = w.force[2] = 0.0;
+  }
+
+  while (iarg < narg) {
+    const std::string kw = arg[iarg];
+    if (kw == "zlo" || kw == "zhi") {
+      if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, "fix grflow/wall " + kw, error);
+      Wall &w = walls[kw == "zlo" ? LO : HI];
+      w.active = 1;
+      w.z = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      iarg += 2;
+    } else if (kw == "velocity_arm") {
+      if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, "fix grflow/wall velocity_arm", error);
+      if (strcmp(arg[iarg + 1], "reduced") == 0)
+        full_arm = 0;
+      else if (strcmp(arg[iarg + 1], "full") == 0)
+        full_arm = 1;
+      else
+        error->all(FLERR, "Unknown fix grflow/wall velocity_arm value {}: expected reduced or full",
+                   arg[iarg + 1]);
+      iarg += 2;
+    } else {
+      error->all(FLERR, "Unknown fix grflow/wall keyword: {}", kw);
+    }
+  }
+  if (!walls[LO].active && !walls[HI].active)
+    error->all(FLERR, "Fix grflow/wall needs a wall: zlo and/or zhi");
+  if (walls[LO].active && walls[HI].active && walls[HI].z <= walls[LO].z)
+    error->all(FLERR, "Fix grflow/wall zhi {} must be above zlo {}", walls[HI].z, walls[LO].z);
+  if (domain->zperiodic)
+    error->all(FLERR, "Fix grflow/wall needs a non-periodic z boundary");
+
+  vector_flag = 1;
+  size_vector = NWALL * NVECTOR;
+  global_freq = 1;
+  extvector = 1;
+  energy_global_flag = 0;
+  virial_global_flag = virial_peratom_flag = 1;
+  thermo_virial = 1;
+  restart_global = 1;
+  restart_peratom = 1;
+  create_attribute = 1;
+  dynamic_group_allow = 0;
+
+  force_flag = 0;
+  dt = update->dt;
+
+  grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
+  for (int i = 0; i < atom->nlocal; i++) set_arrays(i);
+}
+
+/* ---------------------------------------------------------------------- */
+
+FixGRFLOWWall::~FixGRFLOWWall()
+{
+  if (copymode) return;
+  atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+  memory->destroy(history);
+  memory->destroy(contact);
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixGRFLOWWall::setmask()
+{
+  return INITIAL_INTEGRATE | POST_FORCE;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixGRFLOWWall::init()
+{
+  dt = update->dt;
+  if (utils::strmatch(update->integrate_style, "^respa"))
+    error->all(FLERR, "Fix grflow/wall does not support run_style respa");
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixGRFLOWWall::setup(int vflag)
+{
+  post_force(vflag);
+}
+
+/* ----------------------------------------------------------------------
+   move the walls with their velocities, as the atoms move
+------------------------------------------------------------------------- */
+
+void FixGRFLOWWall::initial_integrate(int /*vflag*/)
+{
+  for (auto &w : walls) {
+    if (!w.active) continue;
+    w.z += dt * w.v[2];
+    w.disp[0] += dt * w.v[0];
+    w.disp[1] += dt * w.v[1];
+  }
+  if (walls[LO].active && walls[HI].active && walls[HI].z <= walls[LO].z)
+    error->all(FLERR, "Fix grflow/wall {}: the top wall has reached the bottom wall", id);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixGRFLOWWall::post_force(int vflag)
+{
+  v_init(vflag);
+  force_flag = 0;
+
+  double **x = atom->x;
+  double **v = atom->v;
+  double **f = atom->f;
+  double **omega = atom->omega;
+  double **torque = atom->torque;
+  const double *radius = atom->radius;
+  const int *mask = atom->mask;
+  const tagint *tag = atom->tag;
+  const int nlocal = atom->nlocal;
+  const bool update_history = (update->setupflag == 0);
+  const double wzero[3] = {0.0, 0.0, 0.0};
+
+  for (auto &w : walls) w.force[0] = w.force[1] = w.force[2] = 0.0;
+
+  for (int i = 0; i < nlocal; i++) {
+    for (int m = 0; m < NCONTACT; m++) contact[i][m] = 0.0;
+    if (!(mask[i] & groupbit)) continue;
+    const double rad = radius[i];
+
+    for (int iw = 0; iw < NWALL; iw++) {
+      Wall &w = walls[iw];
+      if (!w.active) continue;
+      double *hist = &history[i][iw * HIST_SIZE];
+      const double sign = normal_sign(iw);
+      const double gap = sign * (x[i][2] - w.z);    // centre to wall, along n
+      if (gap <= 0.0)
+        error->one(FLERR, "Fix grflow/wall {}: atom {} crossed the {} wall (z = {}, wall at {})",
+                   id, tag[i], iw == LO ? "zlo" : "zhi", x[i][2], w.z);
+      if (gap >= rad) {
+        for (int k = 0; k < HIST_SIZE; k++) hist[k] = 0.0;
+        continue;
+      }
+
+      // the wall as a sphere of infinite radius: a' = a_i, no spin
+      ContactGeometry g;
+      g.n[0] = g.n[1] = 0.0;
+      g.n[2] = sign;
+      g.delta = rad - gap;
+      g.arm_i = rad - 0.5 * g.delta;
+      g.arm_j = 0.0;
+      g.varm_i = full_arm ? rad : g.arm_i;
+      g.varm_j = 0.0;
+      g.reff = rad;
+      const double vrel[3] = {v[i][0] - w.v[0], v[i][1] - w.v[1], v[i][2] - w.v[2]};
+      ContactForces out;
+      contact_forces(coeff, g, vrel, omega[i], wzero, dt, update_history, hist, out);
+
+      for (int k = 0; k < 3; k++) {
+        f[i][k] += out.f[k];
+        torque[i][k] += out.torque_i[k];
+        w.force[k] -= out.f[k];
+      }
+      if (out.fn > 0.0) {
+        contact[i][4 * iw] = g.arm_i;
+        for (int k = 0; k < 3; k++) contact[i][4 * iw + 1 + k] = out.f[k];
+      }
+
+      // virial of the contact, branch vector from the contact point to the
+      // centre: l = arm n; symmetrized, as the 6-component virial is
+      if (evflag) {
+        const double l = g.arm_i * sign;
+        double vir[6];
+        vir[0] = vir[1] = vir[3] = 0.0;
+        vir[2] = l * out.f[2];
+        vir[4] = 0.5 * l * out.f[0];
+        vir[5] = 0.5 * l * out.f[1];
+        v_tally(i, vir);
+      }
+    }
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixGRFLOWWall::reset_dt()
+{
+  dt = update->dt;
+}
+
+/* ----------------------------------------------------------------------
+   per wall (lo, then hi): force of the particles on it (3), z, x and y
+   displacement since the fix was defined
+------------------------------------------------------------------------- */
+
+double FixGRFLOWWall::compute_vector(int n)
+{
+  if (force_flag == 0) {
+    double local[NWALL * 3], total[NWALL * 3];
+    for (int iw = 0; iw < NWALL; iw++)
+      for (int k = 0; k < 3; k++) local[3 * iw + k] = walls[iw].force[k];
+    MPI_Allreduce(local, total, NWALL * 3, MPI_DOUBLE, MPI_SUM, world);
+    for (int iw = 0; iw < NWALL; iw++)
+      for (int k = 0; k < 3; k++) wall_force_all[iw][k] = total[3 * iw + k];
+    force_flag = 1;
+  }
+  const int iw = n / NVECTOR, k = n % NVECTOR;
+  const Wall &w = walls[iw];
+  if (k < 3) return wall_force_all[iw][k];
+  if (k == 3) return w.active ? w.z : 0.0;
+  return w.disp[k - 4];
+}
+
+/* ----------------------------------------------------------------------
+   fix_modify ID wall lo|hi vel vx vy vz
+   fix_modify ID wall lo|hi z value
+------------------------------------------------------------------------- */
+
+int FixGRFLOWWall::modify_param(int narg, char **arg)
+{
+  if (strcmp(arg[0], "wall") != 0) return 0;
+  if (narg < 4) utils::missing_cmd_args(FLERR, "fix_modify grflow/wall wall", error);
+  int iw;
+  if (strcmp(arg[1], "lo") == 0)
+    iw = LO;
+  else if (strcmp(arg[1], "hi") == 0)
+    iw = HI;
+  else
+    error->all(FLERR, "fix_modify {} wall: expected lo or hi, got {}", id, arg[1]);
+  Wall &w = walls[iw];
+  if (!w.active) error->all(FLERR, "fix_modify {} wall {}: this fix has no such wall", id, arg[1]);
+  if (strcmp(arg[2], "vel") == 0) {
+    if (narg < 6) utils::missing_cmd_args(FLERR, "fix_modify grflow/wall wall vel", error);
+    for (int k = 0; k < 3; k++) w.v[k] = utils::numeric(FLERR, arg[3 + k], false, lmp);
+    return 6;
+  }
+  if (strcmp(arg[2], "z") == 0) {
+    w.z = utils::numeric(FLERR, arg[3], false, lmp);
+    if (walls[LO].active && walls[HI].active && walls[HI].z <= walls[LO].z)
+      error->all(FLERR, "fix_modify {}: zhi {} must be above zlo {}", id, walls[HI].z,
+                 walls[LO].z);
+    return 4;
+  }
+  error->all(FLERR, "fix_modify {} wall {}: expected vel or z, got {}", id, arg[1], arg[2]);
+  return 0;
+}
+
+/* ----------------------------------------------------------------------
+   wall state for restart files: active, z, v, displacement per wall
+------------------------------------------------------------------------- */
+
+void FixGRFLOWWall::write_restart(FILE *fp)
+{
+  double list[NWALL * 7];
+  int n = 0;
+  for (const auto &w : walls) {
+    list[n++] = w.active;
+    list[n++] = w.z;
+    for (int k = 0; k < 3; k++) list[n++] = w.v[k];
+    list[n++] = w.disp[0];
+    list[n++] = w.disp[1];
+  }
+  if (comm->me == 0) {
+    int size = n * sizeof(double);
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(list, sizeof(double), n, fp);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixGRFLOWWall::restart(char *buf)
+{
+  auto list = (double *) buf;
+  int n = 0;
+  for (auto &w : walls) {
+    const int active = (int) list[n++];
+    if (active != w.active)
+      error->all(FLERR, "Fix grflow/wall {}: restart file has other walls than the command", id);
+    w.z = list[n++];
+    for (int k = 0; k < 3; k++) w.v[k] = list[n++];
+    w.disp[0] = list[n++];
+    w.disp[1] = list[n++];
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+double FixGRFLOWWall::memory_usage()
+{
+  return (double) atom->nmax * (NHIST + NCONTACT) * sizeof(double);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixGRFLOWWall::grow_arrays(int nmax)
+{
+  memory->grow(history, nmax, NHIST, "grflow/wall:history");
+  memory->grow(contact, nmax, NCONTACT, "grflow/wall:contact");
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixGRFLOWWall::copy_arrays(int i, int j, int /*delflag*/)
+{
+  for (int m = 0; m < NHIST; m++) history[j][m] = history[i][m];
+  for (int m = 0; m < NCONTACT; m++) contact[j][m] = contact[i][m];
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixGRFLOWWall::set_arrays(int i)
+{
+  for (int m = 0; m < NHIST; m++) history[i][m] = 0.0;
+  for (int m = 0; m < NCONTACT; m++) contact[i][m] = 0.0;
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixGRFLOWWall::pack_exchange(int i, double *buf)
+{
+  for (int m = 0; m < NHIST; m++) buf[m] = history[i][m];
+  return NHIST;
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixGRFLOWWall::unpack_exchange(int nlocal, double *buf)
+{
+  for (int m = 0; m < NHIST; m++) history[nlocal][m] = buf[m];
+  for (int m = 0; m < NCONTACT; m++) contact[nlocal][m] = 0.0;
+  return NHIST;
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixGRFLOWWall::pack_restart(int i, double *buf)
+{
+  // buf[0] is the count, as other fixes read it
+  buf[0] = NHIST + 1;
+  for (int m = 0; m < NHIST; m++) buf[m + 1] = history[i][m];
+  return NHIST + 1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixGRFLOWWall::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  m++;
+  for (int k = 0; k < NHIST; k++) history[nlocal][k] = extra[nlocal][m++];
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixGRFLOWWall::size_restart(int /*nlocal*/)
+{
+  return NHIST + 1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixGRFLOWWall::maxsize_restart()
+{
+  return NHIST + 1;
+}
