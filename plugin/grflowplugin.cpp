@@ -12,7 +12,8 @@
 ------------------------------------------------------------------------- */
 
 /* ----------------------------------------------------------------------
-   Plugin entry point: registers the GRFLOW styles with a PLUGIN-enabled
+   Plugin entry point: registers the GRFLOW styles (pair granular/grflow,
+   compute grflow/network, fix grflow/wall) with a PLUGIN-enabled
    LAMMPS 4Feb2025 built with the same MPI, LAMMPS_SIZES and compiler.
      plugin load grflowplugin.so
 ------------------------------------------------------------------------- */
@@ -20,6 +21,8 @@
 #include "lammpsplugin.h"
 #include "version.h"
 
+#include "compute_grflow_network.h"
+#include "fix_grflow_wall.h"
 #include "pair_granular_grflow.h"
 
 using namespace LAMMPS_NS;
@@ -27,6 +30,16 @@ using namespace LAMMPS_NS;
 static Pair *pair_granular_grflow_creator(LAMMPS *lmp)
 {
   return new PairGranularGRFLOW(lmp);
+}
+
+static Compute *compute_grflow_network_creator(LAMMPS *lmp, int argc, char **argv)
+{
+  return new ComputeGRFLOWNetwork(lmp, argc, argv);
+}
+
+static Fix *fix_grflow_wall_creator(LAMMPS *lmp, int argc, char **argv)
+{
+  return new FixGRFLOWWall(lmp, argc, argv);
 }
 
 extern "C" __attribute__((visibility("default"))) void lammpsplugin_init(void *lmp, void *handle,
@@ -42,5 +55,17 @@ extern "C" __attribute__((visibility("default"))) void lammpsplugin_init(void *l
   plugin.author = "GRFLOW developers";
   plugin.creator.v1 = (lammpsplugin_factory1 *) &pair_granular_grflow_creator;
   plugin.handle = handle;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.style = "compute";
+  plugin.name = "grflow/network";
+  plugin.info = "GRFLOW sub-volume stress, coordination, connectivity and fabric anisotropy";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &compute_grflow_network_creator;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.style = "fix";
+  plugin.name = "grflow/wall";
+  plugin.info = "GRFLOW flat frictional walls normal to z";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &fix_grflow_wall_creator;
   (*register_plugin)(&plugin, lmp);
 }

@@ -190,8 +190,13 @@ void ComputeGRFLOWNetwork::check_setup()
                  "volume with the volume keyword", idregion);
   }
   walls.clear();
-  for (auto *ifix : modify->get_fix_by_style("^grflow/wall$"))
-    walls.push_back(dynamic_cast<FixGRFLOWWall *>(ifix));
+  for (auto *ifix : modify->get_fix_by_style("^grflow/wall$")) {
+    auto *wfix = dynamic_cast<FixGRFLOWWall *>(ifix);
+    if (!wfix)
+      error->all(FLERR, "Compute grflow/network cannot read fix {}: it comes from another build "
+                 "of GRFLOW (plugin and built-in styles mixed)", ifix->id);
+    walls.push_back(wfix);
+  }
 
   for (const char *s : {zlo_str, zhi_str, volume_str}) {
     if (!s || strncmp(s, "v_", 2) != 0) continue;
