@@ -84,6 +84,10 @@ FixGRFLOWWall::FixGRFLOWWall(LAMMPS *lmp, int narg, char **arg) :
                    arg[iarg + 1]);
       iarg += 2;
     } else {
+      for (const char *name : COEFF_NAMES)
+        if (kw == name || kw == "rolling" || kw == "torsion")
+          error->all(FLERR, "Fix grflow/wall contact keyword {} must come right after kn cn, "
+                     "before zlo, zhi and velocity_arm", kw);
       error->all(FLERR, "Unknown fix grflow/wall keyword: {}", kw);
     }
   }
@@ -94,10 +98,13 @@ FixGRFLOWWall::FixGRFLOWWall(LAMMPS *lmp, int narg, char **arg) :
   if (domain->zperiodic)
     error->all(FLERR, "Fix grflow/wall needs a non-periodic z boundary");
 
+  // forces are sums over atoms (extensive), positions and displacements not
   vector_flag = 1;
   size_vector = NWALL * NVECTOR;
   global_freq = 1;
-  extvector = 1;
+  extvector = -1;
+  extlist = new int[size_vector];
+  for (int k = 0; k < size_vector; k++) extlist[k] = (k % NVECTOR < 3) ? 1 : 0;
   energy_global_flag = 0;
   virial_global_flag = virial_peratom_flag = 1;
   thermo_virial = 1;
@@ -120,6 +127,7 @@ FixGRFLOWWall::FixGRFLOWWall(LAMMPS *lmp, int narg, char **arg) :
 FixGRFLOWWall::~FixGRFLOWWall()
 {
   if (copymode) return;
+  delete[] extlist;
   atom->delete_callback(id, Atom::GROW);
   atom->delete_callback(id, Atom::RESTART);
   memory->destroy(history);
