@@ -9,25 +9,15 @@ O(1) differences in the spins, far above the round-off tolerance here.
 Environment: LMP (lmp binary), MPIEXEC (mpirun), GRFLOW_TEST_DECKS.
 """
 import os
-import subprocess
 
 import numpy as np
 import pytest
 
-LMP = os.environ.get("LMP", "lmp")
-MPIEXEC = os.environ.get("MPIEXEC", "mpirun")
-DECKS = os.environ.get("GRFLOW_TEST_DECKS",
-                       os.path.join(os.path.dirname(__file__), "..", "decks"))
+from lmprun import DECKS, run_lmp
+
 STEPS = 5000
 
 
-def run_lmp(args, cwd, nprocs=1):
-    cmd = [LMP, "-log", "none", "-nocite", "-echo", "none"] + args
-    if nprocs > 1:
-        cmd = [MPIEXEC, "--allow-run-as-root", "--oversubscribe", "-np", str(nprocs)] + cmd
-    proc = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True, timeout=600)
-    assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
-    return proc.stdout
 
 
 @pytest.fixture(scope="module")

@@ -14,17 +14,11 @@ import subprocess
 import numpy as np
 import pytest
 
-LMP = os.environ.get("LMP", "lmp")
+from lmprun import DECKS, run_lmp
+
 PLUGIN = os.environ.get("GRFLOW_PLUGIN", "grflowplugin.so")
-DECKS = os.environ.get("GRFLOW_TEST_DECKS",
-                       os.path.join(os.path.dirname(__file__), "..", "decks"))
 
 
-def run_lmp(args, cwd, stdin=None):
-    proc = subprocess.run([LMP, "-log", "none", "-nocite", "-echo", "none"] + args, cwd=cwd,
-                          input=stdin, capture_output=True, text=True, timeout=300)
-    assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
-    return proc.stdout
 
 
 @pytest.mark.skipif(shutil.which("nm") is None, reason="needs nm (binutils)")
@@ -38,7 +32,7 @@ def test_plugin_is_self_contained():
 
 
 def test_plugin_registers_style(tmp_path):
-    out = run_lmp([], tmp_path, stdin=f"plugin load {PLUGIN}\nplugin list\n")
+    out = run_lmp([], tmp_path, stdin=f"plugin load {PLUGIN}\nplugin list\n").stdout
     for style in ("pair style plugin granular/grflow", "compute style plugin grflow/network",
                   "fix style plugin grflow/wall"):
         assert style in out
@@ -55,7 +49,7 @@ def test_plugin_gives_the_builtin_trajectory(tmp_path):
         out = run_lmp(["-in", str(deck), "-var", "newton", "off",
                        "-var", "pairstyle", "granular/grflow",
                        "-var", "paircoeff", "* * 1.0e6 1.15 mut 0.3",
-                       "-var", "dump", str(dumps[name])], tmp_path)
+                       "-var", "dump", str(dumps[name])], tmp_path).stdout
         if name == "plugin":
             assert "Overriding built-in pair style granular/grflow" in out
     a = np.loadtxt(dumps["builtin"], skiprows=9)

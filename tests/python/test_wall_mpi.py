@@ -15,14 +15,12 @@ the error message, it does not hang.
 
 Environment: LMP (lmp binary), MPIEXEC (mpirun).
 """
-import os
-import subprocess
 
 import numpy as np
 import pytest
 
-LMP = os.environ.get("LMP", "lmp")
-MPIEXEC = os.environ.get("MPIEXEC", "mpirun")
+from lmprun import run_lmp
+
 STEPS = 2000
 
 # the packing of test_fix_wall.cpp: fcc lattice of polydisperse spheres, top
@@ -110,14 +108,6 @@ run             100000
 """
 
 
-def run_lmp(args, cwd, nprocs=1, check=True, timeout=600):
-    cmd = [LMP, "-log", "none", "-nocite", "-echo", "none"] + args
-    if nprocs > 1:
-        cmd = [MPIEXEC, "--allow-run-as-root", "--oversubscribe", "-np", str(nprocs)] + cmd
-    proc = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True, timeout=timeout)
-    if check:
-        assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
-    return proc
 
 
 @pytest.fixture(scope="module")
