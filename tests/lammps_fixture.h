@@ -113,6 +113,55 @@ inline std::string fmt_double(double value)
   return buf;
 }
 
+// a command that must fail after some setup commands; returns LAMMPS's message
+inline std::string error_after(const std::vector<std::string> &setup, const std::string &bad)
+{
+  Lammps lmp;
+  lmp.cmds(setup);
+  return lmp.error_of(bad);
+}
+
+// the two half steps of fix nve/sphere (solid spheres, I = 0.4 m r^2), in
+// its order of operations, for hand integrations of a few bodies; Body has
+// x, v, w, f, t (3 each), rad and mass
+template <class Body> void nve_sphere_initial(std::vector<Body> &bodies, double dt)
+{
+  const double dtf = 0.5 * dt;
+  for (auto &p : bodies) {
+    const double dtfm = dtf / p.mass;
+    const double dtir = (dtf / 0.4) / (p.rad * p.rad * p.mass);
+    for (int k = 0; k < 3; k++) {
+      p.v[k] += dtfm * p.f[k];
+      p.x[k] += dt * p.v[k];
+      p.w[k] += dtir * p.t[k];
+    }
+  }
+}
+
+template <class Body> void nve_sphere_final(std::vector<Body> &bodies, double dt)
+{
+  const double dtf = 0.5 * dt;
+  for (auto &p : bodies) {
+    const double dtfm = dtf / p.mass;
+    const double dtir = (dtf / 0.4) / (p.rad * p.rad * p.mass);
+    for (int k = 0; k < 3; k++) {
+      p.v[k] += dtfm * p.f[k];
+      p.w[k] += dtir * p.t[k];
+    }
+  }
+}
+
+// x, v, omega, f or torque (which = 0..4) of all bodies, as gather3() orders them
+template <class Body> std::vector<double> body_field(const std::vector<Body> &bodies, int which)
+{
+  std::vector<double> out;
+  for (const auto &p : bodies) {
+    const double *q = which == 0 ? p.x : which == 1 ? p.v : which == 2 ? p.w : which == 3 ? p.f : p.t;
+    out.insert(out.end(), q, q + 3);
+  }
+  return out;
+}
+
 // a file in the test work directory, private to this process: ctest may run
 // several test programs at once, and they must not share files
 inline std::string workfile(const std::string &name)

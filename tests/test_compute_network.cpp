@@ -753,12 +753,6 @@ const std::vector<std::string> sphere_box = {
     "variable h equal 0.01",
     "variable xa atom x"};
 
-std::string error_after(const std::vector<std::string> &setup, const std::string &bad)
-{
-  Lammps lmp;
-  lmp.cmds(setup);
-  return lmp.error_of(bad);
-}
 
 TEST(NetworkErrors, BadArguments)
 {

@@ -200,43 +200,19 @@ class WallIntegrator {
 
   void run(int nsteps)
   {
-    const double dtf = 0.5 * dt;
     forces(false);    // setup: springs are read, not advanced
     for (int n = 0; n < nsteps; n++) {
       for (auto &w : wall) {
         if (!w.active) continue;
         w.z += dt * w.v[2];
       }
-      for (auto &p : b) {
-        const double dtfm = dtf / p.mass;
-        const double dtir = (dtf / 0.4) / (p.rad * p.rad * p.mass);
-        for (int k = 0; k < 3; k++) {
-          p.v[k] += dtfm * p.f[k];
-          p.x[k] += dt * p.v[k];
-          p.w[k] += dtir * p.t[k];
-        }
-      }
+      nve_sphere_initial(b, dt);
       forces(true);
-      for (auto &p : b) {
-        const double dtfm = dtf / p.mass;
-        const double dtir = (dtf / 0.4) / (p.rad * p.rad * p.mass);
-        for (int k = 0; k < 3; k++) {
-          p.v[k] += dtfm * p.f[k];
-          p.w[k] += dtir * p.t[k];
-        }
-      }
+      nve_sphere_final(b, dt);
     }
   }
 
-  std::vector<double> field(int which) const
-  {
-    std::vector<double> out;
-    for (const auto &p : b) {
-      const double *q = which == 0 ? p.x : which == 1 ? p.v : which == 2 ? p.w : which == 3 ? p.f : p.t;
-      out.insert(out.end(), q, q + 3);
-    }
-    return out;
-  }
+  std::vector<double> field(int which) const { return body_field(b, which); }
 
   std::vector<Ball> b;
   Plane wall[2];
@@ -1126,12 +1102,6 @@ const std::vector<std::string> one_sphere = {
     "create_box 1 box", "create_atoms 1 single 0.005 0.005 0.005",
     "set atom 1 diameter 1.0e-3 density 2650", "timestep 1.0e-6"};
 
-std::string error_after(const std::vector<std::string> &setup, const std::string &bad)
-{
-  Lammps lmp;
-  lmp.cmds(setup);
-  return lmp.error_of(bad);
-}
 
 TEST(FixWallErrors, BadFixCommand)
 {

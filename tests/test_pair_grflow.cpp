@@ -98,39 +98,15 @@ class HandIntegrator {
 
   void run(int nsteps)
   {
-    const double dtf = 0.5 * dt;
     forces(false);    // setup
     for (int n = 0; n < nsteps; n++) {
-      for (auto &p : s) {
-        const double dtfm = dtf / p.mass;
-        const double dtir = (dtf / 0.4) / (p.rad * p.rad * p.mass);
-        for (int k = 0; k < 3; k++) {
-          p.v[k] += dtfm * p.f[k];
-          p.x[k] += dt * p.v[k];
-          p.w[k] += dtir * p.t[k];
-        }
-      }
+      nve_sphere_initial(s, dt);
       forces(true);
-      for (auto &p : s) {
-        const double dtfm = dtf / p.mass;
-        const double dtir = (dtf / 0.4) / (p.rad * p.rad * p.mass);
-        for (int k = 0; k < 3; k++) {
-          p.v[k] += dtfm * p.f[k];
-          p.w[k] += dtir * p.t[k];
-        }
-      }
+      nve_sphere_final(s, dt);
     }
   }
 
-  std::vector<double> field(int which) const
-  {
-    std::vector<double> out;
-    for (const auto &p : s) {
-      const double *q = which == 0 ? p.x : which == 1 ? p.v : which == 2 ? p.w : which == 3 ? p.f : p.t;
-      out.insert(out.end(), q, q + 3);
-    }
-    return out;
-  }
+  std::vector<double> field(int which) const { return body_field(s, which); }
 
   std::vector<Sphere> s;
   double dt;
@@ -532,12 +508,6 @@ TEST_F(Packings, MatchesStockMonodisperseWithTorsion)
 // Bad input
 // ---------------------------------------------------------------------------
 
-std::string error_after(const std::vector<std::string> &setup, const std::string &bad)
-{
-  Lammps lmp;
-  lmp.cmds(setup);
-  return lmp.error_of(bad);
-}
 
 const std::vector<std::string> sphere_box = {
     "units si", "atom_style sphere", "region box block 0 0.01 0 0.01 0 0.01", "create_box 1 box",

@@ -23,3 +23,19 @@ def run_lmp(args, cwd, nprocs=1, stdin=None, check=True, timeout=600):
     if check:
         assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
     return proc
+
+
+def make_packing(work, nside=7, seed=99, dmin=1.0e-3, dmax=2.0e-3, phi=0.60, ncomp=30000):
+    """A dense periodic packing of nside^3 spheres (tests/decks/dense_packing.lmp),
+    written to work/packing.data; returns that path."""
+    data = work / "packing.data"
+    deck = work / "make_packing.lmp"
+    deck.write_text(
+        "units si\natom_style sphere\n"
+        f"variable nside equal {nside}\nvariable seed equal {seed}\n"
+        f"variable dmin equal {dmin}\nvariable dmax equal {dmax}\n"
+        f"variable phi equal {phi}\nvariable ncomp equal {ncomp}\n"
+        f"variable out string {data}\n"
+        f"include {os.path.join(DECKS, 'dense_packing.lmp')}\n")
+    run_lmp(["-in", str(deck)], work)
+    return data

@@ -10,12 +10,11 @@ contribution of a whole contact, far above the round-off tolerance here.
 
 Environment: LMP (lmp binary), MPIEXEC (mpirun), GRFLOW_TEST_DECKS.
 """
-import os
 
 import numpy as np
 import pytest
 
-from lmprun import DECKS, run_lmp
+from lmprun import make_packing, run_lmp
 
 STEPS = 2000
 EVERY = 250
@@ -68,17 +67,7 @@ run             {steps}
 @pytest.fixture(scope="module")
 def packing(tmp_path_factory):
     work = tmp_path_factory.mktemp("network_mpi")
-    data = work / "packing.data"
-    deck = work / "make.lmp"
-    deck.write_text(
-        "units si\natom_style sphere\n"
-        "variable nside equal 7\nvariable seed equal 99\n"
-        "variable dmin equal 1.0e-3\nvariable dmax equal 2.0e-3\n"
-        "variable phi equal 0.60\nvariable ncomp equal 30000\n"
-        f"variable out string {data}\n"
-        f"include {os.path.join(DECKS, 'dense_packing.lmp')}\n")
-    run_lmp(["-in", str(deck)], work)
-    return work, data
+    return work, make_packing(work)
 
 
 def read_ave_time(path):

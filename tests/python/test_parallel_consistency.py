@@ -13,7 +13,7 @@ import os
 import numpy as np
 import pytest
 
-from lmprun import DECKS, run_lmp
+from lmprun import DECKS, make_packing, run_lmp
 
 STEPS = 5000
 
@@ -23,17 +23,7 @@ STEPS = 5000
 @pytest.fixture(scope="module")
 def packing(tmp_path_factory):
     work = tmp_path_factory.mktemp("consistency")
-    data = work / "packing.data"
-    deck = work / "make.lmp"
-    deck.write_text(
-        "units si\natom_style sphere\n"
-        "variable nside equal 7\nvariable seed equal 99\n"
-        "variable dmin equal 1.0e-3\nvariable dmax equal 2.0e-3\n"
-        "variable phi equal 0.60\nvariable ncomp equal 30000\n"
-        f"variable out string {data}\n"
-        f"include {os.path.join(DECKS, 'dense_packing.lmp')}\n")
-    run_lmp(["-in", str(deck)], work)
-    return work, data
+    return work, make_packing(work)
 
 
 def final_state(packing, nprocs, newton, sort):
