@@ -63,6 +63,12 @@ class FixGRFLOWWall : public Fix {
     double force[3];  // force of the particles on the wall, this step
   };
   const Wall &wall(int w) const { return walls[w]; }
+  void set_velocity(int w, double vx, double vy, double vz)
+  {
+    walls[w].v[0] = vx;
+    walls[w].v[1] = vy;
+    walls[w].v[2] = vz;
+  }
 
   // contact of atom i with wall w on this step: arm (a - delta/2, 0 if no
   // force-bearing contact) and force on the atom; for compute grflow/network

@@ -1,0 +1,320 @@
+// clang-format off
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+// clang-format on
+
+/* ----------------------------------------------------------------------
+   Contributing authors: GRFLOW developers
+
+   Stress-controlled cyclic simple shear at constant height: the top wall
+   of a fix grflow/wall (and a glued layer) moves in x at +-vx; the
+   direction reverses when tau from a compute grflow/network reaches
+   +tau_amp while moving +x or -tau_amp while moving -x.  Records p0 when
+   shearing starts, initial liquefaction (first r_u >= threshold) and the
+   reversal count; all of it goes to restart files.
+------------------------------------------------------------------------- */
+
+#include "fix_grflow_shear.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "compute_grflow_network.h"
+#include "error.h"
+#include "fix_grflow_wall.h"
+#include "group.h"
+#include "modify.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+static constexpr int NRESTART = 8;
+
+/* ---------------------------------------------------------------------- */
+
+FixGRFLOWShear::FixGRFLOWShear(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), id_wall(nullptr), id_network(nullptr), wall(nullptr), network(nullptr)
+{
+  if (narg < 7)
+    error->all(FLERR, "Illegal fix grflow/shear command: expected wall-ID compute-ID vx tau_amp "
+               "[keyword value ...]");
+  id_wall = utils::strdup(arg[3]);
+  id_network = utils::strdup(arg[4]);
+  vx = utils::numeric(FLERR, arg[5], false, lmp);
+  tau_amp = utils::numeric(FLERR, arg[6], false, lmp);
+  if (vx <= 0.0) error->all(FLERR, "Fix grflow/shear vx must be > 0, got {}", vx);
+  if (tau_amp <= 0.0) error->all(FLERR, "Fix grflow/shear tau_amp must be > 0, got {}", tau_amp);
+
+  iglue = -1;
+  gluebit = 0;
+  ru_liq = 0.99;
+  check_every = 1;
+  stop_cycles_after_il = stop_cycles = stop_gamma = 0.0;
+
+  int iarg = 7;
+  while (iarg < narg) {
+    const std::string kw = arg[iarg];
+    if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, "fix grflow/shear " + kw, error);
+    if (kw == "every") {
+      check_every = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (check_every < 1) error->all(FLERR, "Fix grflow/shear every must be >= 1");
+    } else if (kw == "liquefaction") {
+      ru_liq = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (ru_liq <= 0.0 || ru_liq > 1.0)
+        error->all(FLERR, "Fix grflow/shear liquefaction threshold must be in (0,1], got {}",
+                   ru_liq);
+    } else if (kw == "stop_cycles") {
+      stop_cycles = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (stop_cycles <= 0.0) error->all(FLERR, "Fix grflow/shear stop_cycles must be > 0");
+    } else if (kw == "stop_after_liquefaction") {
+      stop_cycles_after_il = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (stop_cycles_after_il <= 0.0)
+        error->all(FLERR, "Fix grflow/shear stop_after_liquefaction must be > 0");
+    } else if (kw == "stop_gamma") {
+      stop_gamma = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (stop_gamma <= 0.0) error->all(FLERR, "Fix grflow/shear stop_gamma must be > 0");
+    } else if (kw == "glue") {
+      iglue = group->find(arg[iarg + 1]);
+      if (iglue < 0) error->all(FLERR, "Fix grflow/shear glue group {} does not exist", arg[iarg + 1]);
+      gluebit = group->bitmask[iglue];
+    } else {
+      error->all(FLERR, "Unknown fix grflow/shear keyword: {}", kw);
+    }
+    iarg += 2;
+  }
+
+  vector_flag = 1;
+  size_vector = NOUT;
+  global_freq = 1;
+  extvector = 0;
+  restart_global = 1;
+  if (iglue >= 0) time_integrate = 1;    // the glued layer is moved by this fix
+
+  started = 0;
+  direction = 1;
+  reversals = reversals_il = 0;
+  step_il = -1;
+  p0 = 0.0;
+  time_il = -1.0;
+  tau = press = ru = 0.0;
+  dt = update->dt;
+}
+
+/* ---------------------------------------------------------------------- */
+
+FixGRFLOWShear::~FixGRFLOWShear()
+{
+  delete[] id_wall;
+  delete[] id_network;
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixGRFLOWShear::setmask()
+{
+  int mask = END_OF_STEP;
+  if (iglue >= 0) mask |= INITIAL_INTEGRATE;
+  return mask;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixGRFLOWShear::init()
+{
+  auto *ifix = modify->get_fix_by_id(id_wall);
+  if (!ifix) error->all(FLERR, "Fix grflow/shear: fix {} does not exist", id_wall);
+  wall = dynamic_cast<FixGRFLOWWall *>(ifix);
+  if (!wall || strcmp(ifix->style, "grflow/wall") != 0)
+    error->all(FLERR, "Fix grflow/shear: fix {} is not a fix grflow/wall", id_wall);
+  if (!wall->wall(FixGRFLOWWall::LO).active || !wall->wall(FixGRFLOWWall::HI).active)
+    error->all(FLERR, "Fix grflow/shear: fix {} must have both walls, zlo and zhi", id_wall);
+
+  auto *icompute = modify->get_compute_by_id(id_network);
+  if (!icompute) error->all(FLERR, "Fix grflow/shear: compute {} does not exist", id_network);
+  network = dynamic_cast<ComputeGRFLOWNetwork *>(icompute);
+  if (!network || strcmp(icompute->style, "grflow/network") != 0)
+    error->all(FLERR, "Fix grflow/shear: compute {} is not a compute grflow/network", id_network);
+
+  if (iglue >= 0) {
+    if (group->find(group->names[iglue]) != iglue)
+      error->all(FLERR, "Fix grflow/shear glue group was deleted");
+  }
+  dt = update->dt;
+}
+
+/* ----------------------------------------------------------------------
+   start shearing (first run) or carry on (later runs, restart): the top
+   wall moves in x at direction*vx, never in z, so the height is constant
+------------------------------------------------------------------------- */
+
+void FixGRFLOWShear::setup(int /*vflag*/)
+{
+  if (!started) {
+    network->compute_vector();
+    p0 = network->vector[ComputeGRFLOWNetwork::PRESS];
+    if (p0 <= 0.0)
+      error->all(FLERR, "Fix grflow/shear: the mean stress is {} when shearing starts; "
+                 "it must be > 0 to define r_u", p0);
+    started = 1;
+    direction = 1;
+  }
+  network->set_p0(p0);
+  drive_wall();
+  check();
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixGRFLOWShear::drive_wall()
+{
+  wall->set_velocity(FixGRFLOWWall::HI, direction * vx, 0.0, 0.0);
+}
+
+/* ----------------------------------------------------------------------
+   the glued layer moves rigidly with the top wall
+------------------------------------------------------------------------- */
+
+void FixGRFLOWShear::initial_integrate(int /*vflag*/)
+{
+  double **x = atom->x;
+  double **v = atom->v;
+  double **omega = atom->omega;
+  const int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  const double vw = direction * vx;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & gluebit)) continue;
+    v[i][0] = vw;
+    v[i][1] = v[i][2] = 0.0;
+    omega[i][0] = omega[i][1] = omega[i][2] = 0.0;
+    x[i][0] += dt * vw;
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixGRFLOWShear::end_of_step()
+{
+  if (update->ntimestep % check_every == 0) check();
+}
+
+/* ----------------------------------------------------------------------
+   read tau, p, r_u (global values: every rank decides alike) and reverse
+------------------------------------------------------------------------- */
+
+void FixGRFLOWShear::check()
+{
+  if (network->invoked_vector != update->ntimestep) network->compute_vector();
+  tau = network->vector[ComputeGRFLOWNetwork::TAU];
+  press = network->vector[ComputeGRFLOWNetwork::PRESS];
+  ru = network->vector[ComputeGRFLOWNetwork::RU];
+
+  if ((direction > 0 && tau >= tau_amp) || (direction < 0 && tau <= -tau_amp)) {
+    direction = -direction;
+    reversals++;
+    drive_wall();
+  }
+  if (step_il < 0 && ru >= ru_liq) {
+    step_il = update->ntimestep;
+    time_il = update->atime + (update->ntimestep - update->atimestep) * update->dt;
+    reversals_il = reversals;
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+double FixGRFLOWShear::height() const
+{
+  return wall->wall(FixGRFLOWWall::HI).z - wall->wall(FixGRFLOWWall::LO).z;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixGRFLOWShear::reset_dt()
+{
+  dt = update->dt;
+}
+
+/* ---------------------------------------------------------------------- */
+
+double FixGRFLOWShear::compute_vector(int n)
+{
+  const double xw = wall ? wall->wall(FixGRFLOWWall::HI).disp[0] : 0.0;
+  const double cycles = 0.5 * reversals;
+  const double cycles_il = (step_il >= 0) ? 0.5 * (reversals - reversals_il) : 0.0;
+  switch (n) {
+    case DIRECTION:
+      return direction;
+    case REVERSALS:
+      return reversals;
+    case XWALL:
+      return xw;
+    case GAMMA:
+      return wall ? xw / height() : 0.0;
+    case TAU:
+      return tau;
+    case PRESS:
+      return press;
+    case RU:
+      return ru;
+    case P0:
+      return p0;
+    case STEP_IL:
+      return step_il;
+    case TIME_IL:
+      return time_il;
+    case CYCLES_IL:
+      return cycles_il;
+    case CYCLES:
+      return cycles;
+    case DONE: {
+      int done = 0;
+      if (stop_cycles > 0.0 && cycles >= stop_cycles) done = 1;
+      if (stop_cycles_after_il > 0.0 && step_il >= 0 && cycles_il >= stop_cycles_after_il)
+        done = 1;
+      if (stop_gamma > 0.0 && wall && fabs(xw / height()) >= stop_gamma) done = 1;
+      return done;
+    }
+  }
+  return 0.0;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixGRFLOWShear::write_restart(FILE *fp)
+{
+  double list[NRESTART] = {(double) started, (double) direction, (double) reversals,
+                           (double) reversals_il, (double) step_il, p0, time_il, 0.0};
+  if (comm->me == 0) {
+    int size = NRESTART * sizeof(double);
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(list, sizeof(double), NRESTART, fp);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixGRFLOWShear::restart(char *buf)
+{
+  auto list = (double *) buf;
+  started = (int) list[0];
+  direction = (int) list[1];
+  reversals = (bigint) list[2];
+  reversals_il = (bigint) list[3];
+  step_il = (bigint) list[4];
+  p0 = list[5];
+  time_il = list[6];
+}

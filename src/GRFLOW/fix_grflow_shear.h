@@ -1,0 +1,73 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(grflow/shear,FixGRFLOWShear);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_GRFLOW_SHEAR_H
+#define LMP_FIX_GRFLOW_SHEAR_H
+
+#include "fix.h"
+
+namespace LAMMPS_NS {
+
+class FixGRFLOWShear : public Fix {
+ public:
+  FixGRFLOWShear(class LAMMPS *, int, char **);
+  ~FixGRFLOWShear() override;
+  int setmask() override;
+  void init() override;
+  void setup(int) override;
+  void initial_integrate(int) override;
+  void end_of_step() override;
+  void reset_dt() override;
+  double compute_vector(int) override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
+
+  // output vector (0-based)
+  enum {
+    DIRECTION, REVERSALS, XWALL, GAMMA, TAU, PRESS, RU, P0, STEP_IL, TIME_IL, CYCLES_IL,
+    CYCLES, DONE, NOUT
+  };
+
+ private:
+  char *id_wall, *id_network;
+  class FixGRFLOWWall *wall;
+  class ComputeGRFLOWNetwork *network;
+  int iglue, gluebit;
+  double vx, tau_amp, ru_liq;
+  int check_every;
+  double stop_cycles_after_il, stop_cycles, stop_gamma;
+  double dt;
+
+  // protocol state (restart)
+  int started, direction;
+  bigint reversals, reversals_il, step_il;
+  double p0, time_il;
+
+  // last check
+  double tau, press, ru;
+
+  void check();
+  void drive_wall();
+  double height() const;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
