@@ -34,7 +34,7 @@ def test_plugin_is_self_contained():
 def test_plugin_registers_style(tmp_path):
     out = run_lmp([], tmp_path, stdin=f"plugin load {PLUGIN}\nplugin list\n").stdout
     for style in ("pair style plugin granular/grflow", "compute style plugin grflow/network",
-                  "fix style plugin grflow/wall"):
+                  "fix style plugin grflow/wall", "fix style plugin grflow/shear"):
         assert style in out
 
 
