@@ -101,7 +101,13 @@ FixGRFLOWShear::FixGRFLOWShear(LAMMPS *lmp, int narg, char **arg) :
   global_freq = 1;
   extvector = 0;
   restart_global = 1;
-  if (iglue >= 0) time_integrate = 1;    // the glued layer is moved by this fix
+  // the glued layer is moved by this fix; LAMMPS warns about atoms that are
+  // time integrated more than once by the groupbit of time-integrating
+  // fixes, so that bit must be the glued layer's, not the fix group's
+  if (iglue >= 0) {
+    time_integrate = 1;
+    groupbit = gluebit;
+  }
 
   started = 0;
   direction = 1;
@@ -162,6 +168,7 @@ void FixGRFLOWShear::init()
 
 void FixGRFLOWShear::setup(int /*vflag*/)
 {
+  const bool first = !started;
   if (!started) {
     network->compute_vector();
     p0 = network->vector[ComputeGRFLOWNetwork::PRESS];
@@ -171,9 +178,16 @@ void FixGRFLOWShear::setup(int /*vflag*/)
     started = 1;
     direction = 1;
   }
+  // r_u at this step with this p0 (the compute may have been invoked with
+  // another p0 of its own, its p0 keyword, just above or earlier)
   network->set_p0(p0);
+  network->compute_vector();
   drive_wall();
-  check();
+  // read tau, p, r_u for output; apply the reversal and liquefaction rules
+  // only where an uninterrupted run would (every N-th step, and the very
+  // start), so that a run split at any step (run N run M, read_restart)
+  // takes the same decisions as one run
+  check(first || update->ntimestep % check_every == 0);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -181,6 +195,20 @@ void FixGRFLOWShear::setup(int /*vflag*/)
 void FixGRFLOWShear::drive_wall()
 {
   wall->set_velocity(FixGRFLOWWall::HI, direction * vx, 0.0, 0.0);
+
+  // the glued layer takes the wall velocity at once, so that between steps
+  // (output, the setup of a next run) it moves with the wall as well
+  if (iglue < 0) return;
+  double **v = atom->v;
+  double **omega = atom->omega;
+  const int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & gluebit)) continue;
+    v[i][0] = direction * vx;
+    v[i][1] = v[i][2] = 0.0;
+    omega[i][0] = omega[i][1] = omega[i][2] = 0.0;
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -215,12 +243,13 @@ void FixGRFLOWShear::end_of_step()
    read tau, p, r_u (global values: every rank decides alike) and reverse
 ------------------------------------------------------------------------- */
 
-void FixGRFLOWShear::check()
+void FixGRFLOWShear::check(bool decide)
 {
   if (network->invoked_vector != update->ntimestep) network->compute_vector();
   tau = network->vector[ComputeGRFLOWNetwork::TAU];
   press = network->vector[ComputeGRFLOWNetwork::PRESS];
   ru = network->vector[ComputeGRFLOWNetwork::RU];
+  if (!decide) return;
 
   if ((direction > 0 && tau >= tau_amp) || (direction < 0 && tau <= -tau_amp)) {
     direction = -direction;

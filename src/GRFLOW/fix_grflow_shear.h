@@ -62,7 +62,7 @@ class FixGRFLOWShear : public Fix {
   // last check
   double tau, press, ru;
 
-  void check();
+  void check(bool decide = true);
   void drive_wall();
   double height() const;
 };

@@ -1,0 +1,632 @@
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   fix grflow/shear through the LAMMPS library API, on 144 spheres
+   compressed between two walls (frictionless, so the packing is dense),
+   then sheared with friction at constant height:
+   - the top wall moves at +vx until the first reversal, then at -vx, ...:
+     its displacement is vx dt times the signed step count, the walls'
+     z and the box volume do not change;
+   - the direction flips exactly at the checks where tau >= tau_amp
+     (moving +x) or tau <= -tau_amp (moving -x), and nowhere else;
+   - p0 is p when shearing starts, r_u = 1 - p/p0, the initial
+     liquefaction is the first check with r_u >= R;
+   - a glued layer moves rigidly with the wall, its velocity follows a
+     reversal at once, and it gives no false "integrated more than once"
+     warning;
+   - a p0 keyword of the compute does not leak into the first check;
+   - stop_cycles sets the done flag at the right reversal, fix halt stops;
+   - restart continuation and split runs take the same decisions as one run;
+   - bad input gives a clear error.
+------------------------------------------------------------------------- */
+
+#include "lammps_fixture.h"
+
+#include <fstream>
+#include <sstream>
+
+using namespace grflow_test;
+
+namespace {
+
+// documented vector layout of fix grflow/shear, 0-based
+enum {
+  DIRECTION, REVERSALS, XWALL, GAMMA, TAU, PRESS, RU, P0, STEP_IL, TIME_IL, CYCLES_IL, CYCLES,
+  DONE, NSHEAR
+};
+// fix grflow/wall: per wall Fx Fy Fz z dx dy
+enum { LO_Z = 3, HI_Z = 9, HI_DX = 10, NWALL = 12 };
+// compute grflow/network
+enum { C_PRESS = 6, C_TAU = 7, C_RU = 10 };
+
+const double VX = 0.02, DT = 1.0e-7;
+const int EVERY = 20;
+
+std::vector<double> fvec(Lammps &lmp, const char *id, int n)
+{
+  std::vector<double> out(n, 0.0);
+  for (int k = 0; k < n; k++) {
+    auto *p = (double *) lammps_extract_fix(lmp.handle, id, LMP_STYLE_GLOBAL, LMP_TYPE_VECTOR, k, 0);
+    if (!p) {
+      ADD_FAILURE() << "fix " << id << " vector entry " << k << " not available";
+      return out;
+    }
+    out[k] = *p;
+    lammps_free(p);
+  }
+  return out;
+}
+
+std::vector<double> shear(Lammps &lmp) { return fvec(lmp, "sh", NSHEAR); }
+std::vector<double> wallv(Lammps &lmp) { return fvec(lmp, "w", NWALL); }
+
+std::vector<double> cvec(Lammps &lmp, const char *id)
+{
+  auto *v = (double *) lammps_extract_compute(lmp.handle, id, LMP_STYLE_GLOBAL, LMP_TYPE_VECTOR);
+  if (!v) {
+    ADD_FAILURE() << "compute " << id << " vector not available";
+    return std::vector<double>(30, 0.0);
+  }
+  return std::vector<double>(v, v + 26);
+}
+
+long step(Lammps &lmp) { return (long) lmp.thermo("step"); }
+
+std::string slurp(const std::string &file)
+{
+  std::ifstream in(file);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// 144 polydisperse spheres, compressed without friction by a servo on the
+// top wall to 5 N (about 150 kPa), then left to rest; written once
+const char *PACKING_DECK[] = {
+    "units si", "atom_style sphere", "atom_modify map array", "boundary p p f",
+    "comm_modify vel yes", "lattice fcc 2.0e-3 origin 0.25 0.25 0.25",
+    "region box block 0 3 0 3 0 4 units lattice", "create_box 1 box", "create_atoms 1 box",
+    "variable vmin equal PI/6*1.0e-3^3", "variable vmax equal PI/6*1.4e-3^3",
+    "variable d atom (6/PI*(v_vmin+random(0,1,4321)*(v_vmax-v_vmin)))^(1/3)",
+    "set group all diameter v_d density 2650",
+    "displace_atoms all random 1.0e-4 1.0e-4 1.0e-4 77 units box",
+    "variable vx atom normal(0,0.2,11)", "variable vy atom normal(0,0.2,12)",
+    "variable vz atom normal(0,0.2,13)", "velocity all set v_vx v_vy v_vz",
+    "neighbor 0.2e-3 bin", "neigh_modify delay 0 every 1 check yes",
+    "pair_style granular/grflow", "pair_coeff * * 1.0e6 1.15 mut 0.0", "timestep 1.0e-7",
+    "fix w all grflow/wall 1.0e6 1.15 mut 0.0 zlo 0.0 zhi 8.0e-3", "fix nve all nve/sphere",
+    "fix visc all viscous 1.0e-2", "variable F equal f_w[9]",
+    "fix avF all ave/time 1 1000 1000 v_F", "variable e equal (5.0-f_avF)/5.0",
+    "variable vwall equal -ternary(f_avF<1.5,0.5,0.02*ternary(v_e<-1,-1,v_e))"};
+
+class Shear : public ::testing::Test {
+ public:
+  static void SetUpTestSuite()
+  {
+    restart = workfile("shear_packing.restart");
+    Lammps lmp;
+    for (const char *line : PACKING_DECK) lmp.cmd(line);
+    for (int chunk = 0; chunk < 80; chunk++)
+      lmp.cmds({"fix_modify w wall hi vel 0 0 $(v_vwall)", "run 1000 post no"});
+    lmp.cmds({"fix_modify w wall hi vel 0 0 0", "unfix visc", "unfix avF", "run 20000",
+              "pair_coeff * * 1.0e6 1.15", "write_restart " + restart});
+  }
+  static std::string restart;
+
+  // the packing with friction, walls, integrator and compute; returns p
+  static double read(Lammps &lmp, const std::string &integrate = "fix nve all nve/sphere",
+                     const std::string &file = restart, const std::string &before_run = "")
+  {
+    lmp.cmds({"read_restart " + file, "comm_modify vel yes", "neighbor 0.2e-3 bin",
+              "neigh_modify delay 0 every 1 check yes",
+              "fix w all grflow/wall 1.0e6 1.15 zlo 0.0 zhi 8.0e-3"});
+    if (!integrate.empty()) lmp.cmd(integrate);
+    lmp.cmds({"variable zlo equal f_w[4]", "variable zhi equal f_w[10]",
+              "compute net all grflow/network zlimits v_zlo v_zhi"});
+    if (!before_run.empty()) lmp.cmd(before_run);
+    lmp.cmd("run 0 post no");
+    return cvec(lmp, "net")[C_PRESS];
+  }
+  static std::string shear_cmd(double p, const std::string &extra = "")
+  {
+    return "fix sh all grflow/shear w net " + fmt_double(VX) + " " + fmt_double(0.3 * p) +
+        " every " + std::to_string(EVERY) + " " + extra;
+  }
+};
+std::string Shear::restart;
+
+// state after each check (chunks of EVERY steps)
+struct Record {
+  long step;
+  std::vector<double> sh, wall, net;
+  double lx, ly, vol, time;
+};
+
+std::vector<Record> run_chunks(Lammps &lmp, int nchunks)
+{
+  std::vector<Record> out;
+  auto rec = [&]() {
+    out.push_back({step(lmp), shear(lmp), wallv(lmp), cvec(lmp, "net"), lmp.thermo("lx"),
+                   lmp.thermo("ly"), lmp.thermo("vol"), lmp.thermo("time")});
+  };
+  lmp.cmd("run 0 post no");    // the fix's setup: start of shearing
+  rec();
+  for (int k = 0; k < nchunks; k++) {
+    lmp.cmd("run " + std::to_string(EVERY) + " post no");
+    rec();
+  }
+  return out;
+}
+
+TEST_F(Shear, WallVelocityAndReversalRule)
+{
+  Lammps lmp;
+  const double p = read(lmp);
+  const double amp = 0.3 * p;
+  lmp.cmd(shear_cmd(p));
+  const auto rec = run_chunks(lmp, 300);    // 6000 steps
+  ASSERT_EQ(rec.size(), 301u);
+
+  // at the start: moving +x (or reversed at once if tau >= tau_amp already)
+  EXPECT_EQ(rec[0].sh[REVERSALS], rec[0].net[C_TAU] >= amp ? 1.0 : 0.0);
+
+  double xw = rec[0].wall[HI_DX], xerr = 0.0;
+  int dir = 1, nrev = 0, nplus = 0, nminus = 0;
+  std::vector<long> rev_steps;
+  const double h0 = rec[0].wall[HI_Z] - rec[0].wall[LO_Z];
+  for (size_t k = 0; k < rec.size(); k++) {
+    const auto &r = rec[k];
+    if (k > 0) {
+      // the wall moved EVERY steps at the velocity set at the last check
+      xw += EVERY * DT * dir * VX;
+      xerr = std::max(xerr, std::fabs(r.sh[XWALL] - xw));
+      EXPECT_EQ(r.sh[XWALL], r.wall[HI_DX]);
+    }
+    // tau, p, r_u of the fix are those of the compute at the same step
+    ASSERT_EQ(r.sh[TAU], r.net[C_TAU]) << r.step;
+    ASSERT_EQ(r.sh[PRESS], r.net[C_PRESS]) << r.step;
+    ASSERT_EQ(r.sh[RU], r.net[C_RU]) << r.step;
+    // the rule, applied by hand
+    const double tau = r.net[C_TAU];
+    if ((dir > 0 && tau >= amp) || (dir < 0 && tau <= -amp)) {
+      (dir > 0 ? nplus : nminus)++;
+      dir = -dir;
+      nrev++;
+      rev_steps.push_back(r.step);
+    }
+    ASSERT_EQ(r.sh[DIRECTION], dir) << "step " << r.step << " tau " << tau;
+    ASSERT_EQ(r.sh[REVERSALS], nrev) << "step " << r.step;
+    EXPECT_EQ(r.sh[CYCLES], 0.5 * nrev);
+    EXPECT_DOUBLE_EQ(r.sh[GAMMA], r.sh[XWALL] / h0);
+    // constant height and volume, to the last bit
+    EXPECT_EQ(r.wall[HI_Z] - r.wall[LO_Z], h0);
+    EXPECT_EQ(r.wall[HI_Z], rec[0].wall[HI_Z]);
+    EXPECT_EQ(r.lx, rec[0].lx);
+    EXPECT_EQ(r.ly, rec[0].ly);
+    EXPECT_EQ(r.vol, rec[0].vol);
+  }
+  std::string steps;
+  for (auto s : rev_steps) steps += " " + std::to_string(s);
+  printf("[ measured ] p0 = %.6g Pa, tau_amp = %.6g Pa, reversal steps:%s\n", p, amp,
+         steps.c_str());
+  measured("max |x_w - vx dt sum(direction)| (m)", xerr);
+  measured("x_w at the end (m)", rec.back().sh[XWALL]);
+  EXPECT_LT(xerr, 1.0e-18);
+  // not trivial: reversals both ways
+  EXPECT_GE(nplus, 2);
+  EXPECT_GE(nminus, 2);
+}
+
+TEST_F(Shear, P0RuAndInitialLiquefaction)
+{
+  Lammps lmp;
+  const double p = read(lmp);
+  const double R = 0.002;
+  lmp.cmd(shear_cmd(p, "liquefaction " + fmt_double(R)));
+  const auto rec = run_chunks(lmp, 300);
+  EXPECT_EQ(rec[0].sh[P0], p);
+  EXPECT_EQ(rec[0].sh[PRESS], p);
+  EXPECT_EQ(rec[0].sh[RU], 0.0);
+  long first = -1;
+  double first_time = -1.0, maxru = 0.0;
+  int rev_il = 0;
+  for (const auto &r : rec) {
+    EXPECT_EQ(r.sh[P0], p);
+    EXPECT_NEAR(r.sh[RU], 1.0 - r.sh[PRESS] / p, 1.0e-15);
+    maxru = std::max(maxru, r.sh[RU]);
+    if (first < 0 && r.sh[RU] >= R) {
+      first = r.step;
+      first_time = r.time;
+      rev_il = (int) r.sh[REVERSALS];
+    }
+    EXPECT_EQ(r.sh[STEP_IL], (double) first) << r.step;
+    if (first < 0) {
+      EXPECT_EQ(r.sh[TIME_IL], -1.0);
+      EXPECT_EQ(r.sh[CYCLES_IL], 0.0);
+    } else {
+      EXPECT_EQ(r.sh[TIME_IL], first_time);
+      EXPECT_EQ(r.sh[CYCLES_IL], 0.5 * (r.sh[REVERSALS] - rev_il));
+    }
+  }
+  measured("max r_u", maxru);
+  printf("[ measured ] initial liquefaction (r_u >= %g) at step %ld\n", R, first);
+  ASSERT_GT(first, rec[0].step);
+  EXPECT_GT(rec.back().sh[CYCLES_IL], 0.0);
+}
+
+// the fix's p0, not the compute's own p0, defines r_u from the start: a
+// compute p0 of 2 p must not record liquefaction at the first check
+TEST_F(Shear, ComputeP0DoesNotLeakIntoTheFirstCheck)
+{
+  Lammps lmp;
+  const double p = read(lmp);
+  lmp.cmds({"uncompute net", "compute net all grflow/network zlimits v_zlo v_zhi p0 " +
+                                 fmt_double(2.0 * p),
+            shear_cmd(p, "liquefaction 0.3"), "run 0 post no"});
+  const auto s = shear(lmp);
+  EXPECT_EQ(s[P0], p);
+  EXPECT_EQ(s[RU], 0.0);
+  EXPECT_EQ(s[STEP_IL], -1.0);
+}
+
+TEST_F(Shear, GluedLayerMovesWithTheWall)
+{
+  Lammps lmp;
+  // the layer: spheres with centres within 1.2 mm of the top wall, not
+  // integrated by fix nve/sphere
+  const double p = read(lmp, "");
+  const double zcut = wallv(lmp)[HI_Z] - 1.2e-3;
+  const std::string log = workfile("shear_glue.log");
+  lmp.cmds({"variable top atom z>" + fmt_double(zcut), "group glue variable top",
+            "group mobile subtract all glue",
+            "fix nve mobile nve/sphere", shear_cmd(p, "glue glue"), "log " + log,
+            "run 0 post no", "log none"});
+  // no false warning: the fix's group is all, its integrated atoms the glue
+  EXPECT_EQ(slurp(log).find("time integrated more than once"), std::string::npos);
+  {
+    Lammps twice;
+    read(twice, "fix nve all nve/sphere");
+    twice.cmds({"variable top atom z>" + fmt_double(zcut), "group glue variable top",
+                shear_cmd(p, "glue glue"), "log " + log, "run 0 post no", "log none"});
+    EXPECT_NE(slurp(log).find("One or more atoms are time integrated more than once"),
+              std::string::npos);
+  }
+  const int n = lmp.natoms();
+  std::vector<int> image0(n), image(n);
+  lammps_gather_atoms(lmp.handle, (char *) "image", 0, 1, image0.data());
+  std::vector<double> g(n);
+  {
+    const auto x = lmp.gather3("x");
+    for (int i = 0; i < n; i++) g[i] = x[3 * i + 2] > zcut ? 1.0 : 0.0;
+  }
+  int ng = 0;
+  for (double v : g) ng += v > 0.5;
+  measured("glued spheres", ng);
+  ASSERT_GE(ng, 10);
+  ASSERT_LT(ng, n / 2);
+  ASSERT_EQ(ng, (int) lammps_eval(lmp.handle, "count(glue)"));
+
+  const auto x0 = lmp.gather3("x");
+  const double lx = lmp.thermo("lx");
+  const double xw0 = shear(lmp)[XWALL];
+  double errx = 0.0;
+  int nrev = 0;
+  for (int chunk = 0; chunk < 150; chunk++) {
+    lmp.cmd("run " + std::to_string(EVERY) + " post no");
+    const auto s = shear(lmp);
+    nrev = (int) s[REVERSALS];
+    const auto x = lmp.gather3("x"), v = lmp.gather3("v"), w = lmp.gather3("omega");
+    lammps_gather_atoms(lmp.handle, (char *) "image", 0, 1, image.data());
+    const double dxw = s[XWALL] - xw0;
+    for (int i = 0; i < n; i++) {
+      if (g[i] < 0.5) continue;
+      const int ix0 = (image0[i] & 1023) - 512, ix = (image[i] & 1023) - 512;
+      const double ux = x[3 * i] + ix * lx - (x0[3 * i] + ix0 * lx);
+      errx = std::max(errx, std::fabs(ux - dxw));
+      ASSERT_EQ(x[3 * i + 1], x0[3 * i + 1]);
+      ASSERT_EQ(x[3 * i + 2], x0[3 * i + 2]);
+      ASSERT_EQ(v[3 * i], s[DIRECTION] * VX);
+      ASSERT_EQ(v[3 * i + 1], 0.0);
+      ASSERT_EQ(v[3 * i + 2], 0.0);
+      ASSERT_EQ(w[3 * i], 0.0);
+      ASSERT_EQ(w[3 * i + 1], 0.0);
+      ASSERT_EQ(w[3 * i + 2], 0.0);
+    }
+  }
+  measured("glue: max |x - x0 - x_w| (m)", errx);
+  measured("glue: reversals", nrev);
+  EXPECT_LT(errx, 1.0e-15);
+  EXPECT_GE(nrev, 1);
+}
+
+TEST_F(Shear, StopCyclesAndHalt)
+{
+  long stop_step = -1;
+  {
+    Lammps lmp;
+    const double p = read(lmp);
+    lmp.cmd(shear_cmd(p, "stop_cycles 1"));
+    for (int chunk = 0; chunk < 400 && stop_step < 0; chunk++) {
+      lmp.cmd("run " + std::to_string(EVERY) + " post no");
+      const auto s = shear(lmp);
+      ASSERT_EQ(s[DONE], s[REVERSALS] >= 2 ? 1.0 : 0.0) << step(lmp);
+      if (s[REVERSALS] >= 2) stop_step = step(lmp);
+    }
+  }
+  ASSERT_GT(stop_step, 0);
+  Lammps lmp;
+  const double p = read(lmp);
+  const long start = step(lmp);
+  lmp.cmds({shear_cmd(p, "stop_cycles 1"), "variable done equal f_sh[13]",
+            "fix stop all halt " + std::to_string(EVERY) + " v_done > 0.5 error continue",
+            "run 20000"});
+  printf("[ measured ] second reversal (done) at step %ld, %ld steps of shear\n", stop_step,
+         stop_step - start);
+  EXPECT_EQ(step(lmp), stop_step);
+  EXPECT_EQ(shear(lmp)[REVERSALS], 2.0);
+  EXPECT_EQ(shear(lmp)[DONE], 1.0);
+}
+
+// reversal steps from a fix print file: lines "step reversals"
+std::vector<long> reversal_steps(const std::string &file)
+{
+  std::ifstream in(file);
+  std::vector<long> out;
+  std::string line;
+  double last = 0.0;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream ss(line);
+    long s;
+    double rev;
+    ss >> s >> rev;
+    if (rev != last) out.push_back(s);
+    last = rev;
+  }
+  return out;
+}
+
+std::string join(const std::vector<long> &v)
+{
+  std::string s;
+  for (auto x : v) s += " " + std::to_string(x);
+  return s;
+}
+
+void shear_run_with_record(Lammps &lmp, double p, const std::string &file, bool newfix)
+{
+  if (newfix) lmp.cmd(Shear::shear_cmd(p, "liquefaction 0.002"));
+  lmp.cmds({"variable rev equal f_sh[2]",
+            "fix rec all print " + std::to_string(EVERY) + " \"$(step) ${rev}\" file " + file +
+                " screen no"});
+}
+
+// reversal steps in a fix print file after a given reversal count
+std::vector<long> reversal_steps_after(const std::string &file, double last)
+{
+  std::ifstream in(file);
+  std::vector<long> out;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream ss(line);
+    long s;
+    double rev;
+    ss >> s >> rev;
+    if (rev != last) out.push_back(s);
+    last = rev;
+  }
+  return out;
+}
+
+// A: one run of 6000 steps.  A2: the same split into two runs in one
+// instance, with write_restart at the split.  B: read_restart in a new
+// instance, the same fixes and compute, the rest of the run.  Splits at a
+// multiple of every and elsewhere.  B must take the same decisions as A,
+// and reproduce A2 to round-off.  (A2 and A differ by more than round-off
+// even without this fix: a new run's setup recomputes the forces with
+// full-step instead of half-step velocities, and the damping differs.)
+TEST_F(Shear, RestartContinuesTheProtocol)
+{
+  const int S = 6000;
+  std::vector<double> xa, wa, sa;
+  std::vector<long> ra;
+  {
+    Lammps lmp;
+    const double p = read(lmp);
+    const std::string f = workfile("shear_A.txt");
+    shear_run_with_record(lmp, p, f, true);
+    lmp.cmd("run " + std::to_string(S));
+    lmp.cmd("unfix rec");
+    ra = reversal_steps(f);
+    xa = lmp.gather3("x");
+    wa = lmp.gather3("omega");
+    sa = shear(lmp);
+  }
+  printf("[ measured ] uninterrupted: reversal steps%s\n", join(ra).c_str());
+  ASSERT_GE(ra.size(), 3u);
+  for (int split : {3000, 3010}) {
+    const std::string tag = std::to_string(split);
+    const std::string mid = workfile("shear_mid.restart");
+    const std::string f1 = workfile("shear_A2.txt"), f2 = workfile("shear_B.txt");
+    std::vector<double> xa2, wa2, sa2;
+    std::vector<long> ra2;
+    double rev_mid = 0.0;
+    {
+      Lammps lmp;
+      const double p = read(lmp);
+      shear_run_with_record(lmp, p, f1, true);
+      lmp.cmds({"run " + std::to_string(split), "write_restart " + mid});
+      rev_mid = shear(lmp)[REVERSALS];
+      lmp.cmds({"run " + std::to_string(S - split), "unfix rec"});
+      ra2 = reversal_steps(f1);
+      xa2 = lmp.gather3("x");
+      wa2 = lmp.gather3("omega");
+      sa2 = shear(lmp);
+    }
+    Lammps lmp;
+    // the same fix command, with the same ID (tau_amp from the old p0),
+    // before the first run: that run's init drops unclaimed restart state
+    read(lmp, "fix nve all nve/sphere", mid,
+         "fix sh all grflow/shear w net " + fmt_double(VX) + " " + fmt_double(0.3 * sa[P0]) +
+             " every " + std::to_string(EVERY) + " liquefaction 0.002");
+    EXPECT_EQ(shear(lmp)[REVERSALS], rev_mid);
+    shear_run_with_record(lmp, 0.0, f2, false);
+    lmp.cmd("run " + std::to_string(S - split));
+    lmp.cmd("unfix rec");
+    std::vector<long> rb;
+    for (long st : ra) if (st <= step(lmp) - (S - split)) rb.push_back(st);
+    for (long st : reversal_steps_after(f2, rev_mid)) rb.push_back(st);
+    printf("[ measured ] split at %d: reversal steps A2%s, B%s\n", split, join(ra2).c_str(),
+           join(rb).c_str());
+    EXPECT_EQ(ra2, ra) << "split at " << split;
+    EXPECT_EQ(rb, ra) << "split at " << split;
+    const auto sb = shear(lmp);
+    for (int k : {DIRECTION, REVERSALS, XWALL, P0, STEP_IL, CYCLES_IL, CYCLES}) {
+      EXPECT_EQ(sb[k], sa[k]) << "entry " << k + 1 << " split " << split;
+      EXPECT_EQ(sa2[k], sa[k]) << "entry " << k + 1 << " split " << split;
+    }
+    EXPECT_DOUBLE_EQ(sb[TIME_IL], sa[TIME_IL]);
+    const auto xb = lmp.gather3("x"), wb = lmp.gather3("omega");
+    const double dx = max_rel_diff(xb, xa2), dw = max_rel_diff(wb, wa2);
+    measured("restart B vs split A2: x rel diff (split " + tag + ")", dx);
+    measured("restart B vs split A2: omega rel diff (split " + tag + ")", dw);
+    measured("split A2 vs one run A: x rel diff (split " + tag + ")", max_rel_diff(xa2, xa));
+    measured("split A2 vs one run A: omega rel diff (split " + tag + ")", max_rel_diff(wa2, wa));
+    EXPECT_LT(dx, 1.0e-13);
+    EXPECT_LT(dw, 1.0e-10);
+    EXPECT_LT(max_rel_diff(xb, xa), 1.0e-7);
+  }
+}
+
+// runs of 7 steps (most of them start between two checks) take the same
+// decisions as one run: the setup of a run reads tau but decides only at
+// multiples of every
+TEST_F(Shear, ShortRunsDecideOnlyEveryN)
+{
+  const int S = 4200;
+  std::vector<long> ra, rb;
+  std::vector<double> sa, sb;
+  for (int chunk : {S, 7}) {
+    Lammps lmp;
+    const double p = read(lmp);
+    const std::string f = workfile("shear_chunks.txt");
+    lmp.cmd(shear_cmd(p, "every 100"));    // a wide window between checks
+    shear_run_with_record(lmp, p, f, false);
+    for (int done = 0; done < S; done += chunk)
+      lmp.cmd("run " + std::to_string(std::min(chunk, S - done)) + " post no");
+    lmp.cmd("unfix rec");
+    (chunk == S ? ra : rb) = reversal_steps(f);
+    (chunk == S ? sa : sb) = shear(lmp);
+  }
+  printf("[ measured ] one run: reversal steps%s; runs of 7 steps:%s\n", join(ra).c_str(),
+         join(rb).c_str());
+  ASSERT_GE(ra.size(), 3u);
+  for (long st : ra) EXPECT_EQ(st % 100, 0) << st;
+  EXPECT_EQ(rb, ra);
+  EXPECT_EQ(sb[REVERSALS], sa[REVERSALS]);
+  EXPECT_EQ(sb[DIRECTION], sa[DIRECTION]);
+  EXPECT_NEAR(sb[XWALL], sa[XWALL], 1.0e-18);
+}
+
+// ---------------------------------------------------------------------------
+// Errors
+// ---------------------------------------------------------------------------
+
+TEST_F(Shear, BadArguments)
+{
+  std::vector<std::string> setup = {"read_restart " + restart,
+                                    "fix w all grflow/wall 1.0e6 1.15 zlo 0.0 zhi 8.0e-3",
+                                    "compute net all grflow/network", "group none empty"};
+  struct Case {
+    const char *line, *expect;
+  } cases[] = {
+      {"fix sh all grflow/shear w net 0.02", "Illegal fix grflow/shear command: expected wall-ID"},
+      {"fix sh all grflow/shear w net", "Illegal fix grflow/shear command"},
+      {"fix sh all grflow/shear w net 0 1000", "Fix grflow/shear vx must be > 0, got 0"},
+      {"fix sh all grflow/shear w net -0.1 1000", "vx must be > 0"},
+      {"fix sh all grflow/shear w net 0.02 0", "Fix grflow/shear tau_amp must be > 0, got 0"},
+      {"fix sh all grflow/shear w net 0.02 -5", "tau_amp must be > 0"},
+      {"fix sh all grflow/shear w net abc 1000", "Expected floating point"},
+      {"fix sh all grflow/shear w net 0.02 1000 foo 1", "Unknown fix grflow/shear keyword: foo"},
+      {"fix sh all grflow/shear w net 0.02 1000 every", "fix grflow/shear every"},
+      {"fix sh all grflow/shear w net 0.02 1000 every 0", "Fix grflow/shear every must be >= 1"},
+      {"fix sh all grflow/shear w net 0.02 1000 every 2.5", "Expected integer"},
+      {"fix sh all grflow/shear w net 0.02 1000 liquefaction 0",
+       "Fix grflow/shear liquefaction threshold must be in (0,1], got 0"},
+      {"fix sh all grflow/shear w net 0.02 1000 liquefaction 1.5", "must be in (0,1]"},
+      {"fix sh all grflow/shear w net 0.02 1000 stop_cycles 0",
+       "Fix grflow/shear stop_cycles must be > 0"},
+      {"fix sh all grflow/shear w net 0.02 1000 stop_after_liquefaction -1",
+       "Fix grflow/shear stop_after_liquefaction must be > 0"},
+      {"fix sh all grflow/shear w net 0.02 1000 stop_gamma 0",
+       "Fix grflow/shear stop_gamma must be > 0"},
+      {"fix sh all grflow/shear w net 0.02 1000 glue nogroup",
+       "Fix grflow/shear glue group nogroup does not exist"},
+  };
+  for (const auto &c : cases) {
+    const std::string msg = error_after(setup, c.line);
+    EXPECT_NE(msg.find(c.expect), std::string::npos) << c.line << " -> '" << msg << "'";
+  }
+
+  // checked at init (run): the wall fix and the compute
+  struct InitCase {
+    std::vector<std::string> extra;
+    const char *line, *expect;
+  } init_cases[] = {
+      {{}, "fix sh all grflow/shear nowall net 0.02 1000",
+       "Fix grflow/shear: fix nowall does not exist"},
+      {{"fix nve all nve/sphere"}, "fix sh all grflow/shear nve net 0.02 1000",
+       "Fix grflow/shear: fix nve is not a fix grflow/wall"},
+      {{"fix w1 all grflow/wall 1.0e6 1.15 zlo 0.0"}, "fix sh all grflow/shear w1 net 0.02 1000",
+       "Fix grflow/shear: fix w1 must have both walls, zlo and zhi"},
+      {{"fix w2 all grflow/wall 1.0e6 1.15 zhi 8.0e-3"}, "fix sh all grflow/shear w2 net 0.02 1000",
+       "must have both walls"},
+      {{}, "fix sh all grflow/shear w nonet 0.02 1000",
+       "Fix grflow/shear: compute nonet does not exist"},
+      {{"compute ke all ke"}, "fix sh all grflow/shear w ke 0.02 1000",
+       "Fix grflow/shear: compute ke is not a compute grflow/network"},
+  };
+  for (const auto &c : init_cases) {
+    auto s = setup;
+    s.insert(s.end(), c.extra.begin(), c.extra.end());
+    s.push_back(c.line);
+    const std::string msg = error_after(s, "run 0");
+    EXPECT_NE(msg.find(c.expect), std::string::npos) << c.line << " -> '" << msg << "'";
+  }
+
+  // no stress when shearing starts: spheres apart, p = 0
+  const std::string msg = error_after(
+      {"units si", "atom_style sphere", "boundary p p f", "region box block 0 0.01 0 0.01 0 0.01",
+       "create_box 1 box", "create_atoms 1 single 0.005 0.005 0.005",
+       "set atom 1 diameter 1.0e-3 density 2650", "comm_modify vel yes",
+       "pair_style granular/grflow",
+       "pair_coeff * * 1.0e6 1.15", "fix w all grflow/wall 1.0e6 1.15 zlo 0.001 zhi 0.009",
+       "compute net all grflow/network", "fix sh all grflow/shear w net 0.02 1000"},
+      "run 0");
+  EXPECT_NE(msg.find("Fix grflow/shear: the mean stress is 0 when shearing starts; it must be > "
+                     "0 to define r_u"),
+            std::string::npos)
+      << msg;
+}
+
+}    // namespace
+
+int main(int argc, char **argv)
+{
+  ::testing::InitGoogleTest(&argc, argv);
+  const int rc = RUN_ALL_TESTS();
+  lammps_mpi_finalize();
+  return rc;
+}
