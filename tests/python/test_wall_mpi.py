@@ -16,60 +16,15 @@ the error message, it does not hang.
 Environment: LMP (lmp binary), MPIEXEC (mpirun).
 """
 
+import os
+
 import numpy as np
 import pytest
 
-from lmprun import run_lmp
+from lmprun import DECKS, run_lmp
 
 STEPS = 2000
 
-# the packing of test_fix_wall.cpp: fcc lattice of polydisperse spheres, top
-# wall servo-controlled to 5 N, then left to rest
-PACKING = """
-units           si
-atom_style      sphere
-atom_modify     map array
-boundary        p p f
-comm_modify     vel yes
-lattice         fcc 2.0e-3 origin 0.25 0.25 0.25
-region          box block 0 3 0 3 0 4 units lattice
-create_box      1 box
-create_atoms    1 box
-variable        vmin equal PI/6*1.0e-3^3
-variable        vmax equal PI/6*1.4e-3^3
-variable        d atom (6/PI*(v_vmin+random(0,1,4321)*(v_vmax-v_vmin)))^(1/3)
-set             group all diameter v_d density 2650
-displace_atoms  all random 1.0e-4 1.0e-4 1.0e-4 77 units box
-variable        vx atom normal(0,0.2,11)
-variable        vy atom normal(0,0.2,12)
-variable        vz atom normal(0,0.2,13)
-velocity        all set v_vx v_vy v_vz
-neighbor        0.2e-3 bin
-neigh_modify    delay 0 every 1 check yes
-pair_style      granular/grflow
-pair_coeff      * * 1.0e6 1.15
-timestep        1.0e-7
-fix             w all grflow/wall 1.0e6 1.15 zlo 0.0 zhi 8.0e-3
-fix             nve all nve/sphere
-fix             visc all viscous 1.0e-2
-variable        F equal f_w[9]
-fix             avF all ave/time 1 1000 1000 v_F
-variable        e equal (5.0-f_avF)/5.0
-variable        vwall equal -ternary(f_avF<1.5,0.5,0.02*ternary(v_e<-1,-1,v_e))
-thermo          10000
-variable        i loop 80
-label           servo
-fix_modify      w wall hi vel 0 0 $(v_vwall)
-run             1000 post no
-next            i
-jump            SELF servo
-fix_modify      w wall hi vel 0 0 0
-unfix           visc
-unfix           avF
-run             20000
-write_restart   {restart}
-write_dump      all custom {dump} id x y z omegax omegay omegaz modify sort id format float %.17g
-"""
 
 SHEAR = """
 newton          {newton}
@@ -115,9 +70,8 @@ def packing(tmp_path_factory):
     work = tmp_path_factory.mktemp("wall_mpi")
     restart = work / "packing.restart"
     dump = work / "packing.dump"
-    deck = work / "packing.lmp"
-    deck.write_text(PACKING.format(restart=restart, dump=dump))
-    run_lmp(["-in", str(deck)], work)
+    run_lmp(["-in", os.path.join(DECKS, "wall_packing.lmp"), "-var", "restart", str(restart),
+             "-var", "dump", str(dump)], work)
     return work, restart, np.loadtxt(dump, skiprows=9)
 
 
