@@ -40,7 +40,6 @@ class ComputeGRFLOWNetwork : public Compute {
 
   // reference pressure for r_u, for fixes that capture it (e.g. when shear starts)
   void set_p0(double value) { p0 = value; p0flag = 1; }
-  double get_p0() const { return p0flag ? p0 : 0.0; }
 
   // positions of the output vector entries (0-based)
   enum {

@@ -53,6 +53,7 @@ FixGRFLOWWall::FixGRFLOWWall(LAMMPS *lmp, int narg, char **arg) :
     error->all(FLERR, "Fix grflow/wall requires atom attributes radius, omega and torque "
                "(atom_style sphere)");
 
+  double coeff_value[NCOEFF];
   int iarg = parse_coeffs(lmp, "fix grflow/wall", narg, arg, 3, true, coeff_value);
   pack_coeffs(coeff_value, coeff);
 

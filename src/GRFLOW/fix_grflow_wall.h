@@ -52,7 +52,6 @@ class FixGRFLOWWall : public Fix {
   int maxsize_restart() override;
 
   enum { LO, HI, NWALL };
-  enum { HIST_PER_WALL = GRFLOW::HIST_SIZE };
 
   // a flat wall normal to z: "lo" pushes up (+z), "hi" pushes down (-z)
   struct Wall {
@@ -78,7 +77,6 @@ class FixGRFLOWWall : public Fix {
 
  private:
   GRFLOW::ContactCoeffs coeff;
-  double coeff_value[GRFLOW::NCOEFF];
   int full_arm;
   double dt;
   Wall walls[NWALL];

@@ -49,9 +49,6 @@ class PairGranularGRFLOW : public Pair {
   double atom2cut(int) override;
   double radii2cut(double, double) override;
 
-  // the coefficients of one type pair, as used by the kernel
-  const GRFLOW::ContactCoeffs &coeffs(int itype, int jtype) const { return packed[itype][jtype]; }
-
  protected:
   double dt;
   int full_arm;    // 1: contact-point velocity with full radii (stock compatible)
