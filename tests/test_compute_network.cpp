@@ -874,11 +874,3 @@ TEST(NetworkErrors, NeedsGranularPairAndARun)
 }
 
 }    // namespace
-
-int main(int argc, char **argv)
-{
-  ::testing::InitGoogleTest(&argc, argv);
-  const int rc = RUN_ALL_TESTS();
-  lammps_mpi_finalize();
-  return rc;
-}

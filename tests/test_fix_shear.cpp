@@ -622,11 +622,3 @@ TEST_F(Shear, BadArguments)
 }
 
 }    // namespace
-
-int main(int argc, char **argv)
-{
-  ::testing::InitGoogleTest(&argc, argv);
-  const int rc = RUN_ALL_TESTS();
-  lammps_mpi_finalize();
-  return rc;
-}

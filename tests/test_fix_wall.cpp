@@ -1240,11 +1240,3 @@ TEST(FixWallErrors, RespaAndRestartMismatch)
 }
 
 }    // namespace
-
-int main(int argc, char **argv)
-{
-  ::testing::InitGoogleTest(&argc, argv);
-  const int rc = RUN_ALL_TESTS();
-  lammps_mpi_finalize();
-  return rc;
-}

@@ -570,11 +570,3 @@ TEST(PairGRFLOWErrors, NeedsSpheresAndGhostVelocities)
 }
 
 }    // namespace
-
-int main(int argc, char **argv)
-{
-  ::testing::InitGoogleTest(&argc, argv);
-  const int rc = RUN_ALL_TESTS();
-  lammps_mpi_finalize();
-  return rc;
-}
