@@ -84,6 +84,22 @@ class Lammps {
 
   double thermo(const char *keyword) { return lammps_get_thermo(handle, keyword); }
 
+  // the first n entries of a fix's global vector
+  std::vector<double> fix_vector(const char *id, int n)
+  {
+    std::vector<double> out(n, 0.0);
+    for (int k = 0; k < n; k++) {
+      auto *p = (double *) lammps_extract_fix(handle, id, LMP_STYLE_GLOBAL, LMP_TYPE_VECTOR, k, 0);
+      if (!p) {
+        ADD_FAILURE() << "fix " << id << " vector entry " << k << " not available";
+        return out;
+      }
+      out[k] = *p;
+      lammps_free(p);
+    }
+    return out;
+  }
+
   void *handle;
 };
 

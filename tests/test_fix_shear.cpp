@@ -55,17 +55,7 @@ const int EVERY = 20;
 
 std::vector<double> fvec(Lammps &lmp, const char *id, int n)
 {
-  std::vector<double> out(n, 0.0);
-  for (int k = 0; k < n; k++) {
-    auto *p = (double *) lammps_extract_fix(lmp.handle, id, LMP_STYLE_GLOBAL, LMP_TYPE_VECTOR, k, 0);
-    if (!p) {
-      ADD_FAILURE() << "fix " << id << " vector entry " << k << " not available";
-      return out;
-    }
-    out[k] = *p;
-    lammps_free(p);
-  }
-  return out;
+  return lmp.fix_vector(id, n);
 }
 
 std::vector<double> shear(Lammps &lmp) { return fvec(lmp, "sh", NSHEAR); }

@@ -45,17 +45,7 @@ enum { LO_FX, LO_FY, LO_FZ, LO_Z, LO_DX, LO_DY, HI_FX, HI_FY, HI_FZ, HI_Z, HI_DX
 // global vector of a fix
 std::vector<double> fvec(Lammps &lmp, const char *id)
 {
-  std::vector<double> out(NVEC, 0.0);
-  for (int k = 0; k < NVEC; k++) {
-    auto *p = (double *) lammps_extract_fix(lmp.handle, id, LMP_STYLE_GLOBAL, LMP_TYPE_VECTOR, k, 0);
-    if (!p) {
-      ADD_FAILURE() << "fix " << id << " vector entry " << k << " not available";
-      return out;
-    }
-    out[k] = *p;
-    lammps_free(p);
-  }
-  return out;
+  return lmp.fix_vector(id, NVEC);
 }
 
 // global vector of a compute
