@@ -82,23 +82,8 @@ std::string slurp(const std::string &file)
 }
 
 // 144 polydisperse spheres, compressed without friction by a servo on the
-// top wall to 5 N (about 150 kPa), then left to rest; written once
-const char *PACKING_DECK[] = {
-    "units si", "atom_style sphere", "atom_modify map array", "boundary p p f",
-    "comm_modify vel yes", "lattice fcc 2.0e-3 origin 0.25 0.25 0.25",
-    "region box block 0 3 0 3 0 4 units lattice", "create_box 1 box", "create_atoms 1 box",
-    "variable vmin equal PI/6*1.0e-3^3", "variable vmax equal PI/6*1.4e-3^3",
-    "variable d atom (6/PI*(v_vmin+random(0,1,4321)*(v_vmax-v_vmin)))^(1/3)",
-    "set group all diameter v_d density 2650",
-    "displace_atoms all random 1.0e-4 1.0e-4 1.0e-4 77 units box",
-    "variable vx atom normal(0,0.2,11)", "variable vy atom normal(0,0.2,12)",
-    "variable vz atom normal(0,0.2,13)", "velocity all set v_vx v_vy v_vz",
-    "neighbor 0.2e-3 bin", "neigh_modify delay 0 every 1 check yes",
-    "pair_style granular/grflow", "pair_coeff * * 1.0e6 1.15 mut 0.0", "timestep 1.0e-7",
-    "fix w all grflow/wall 1.0e6 1.15 mut 0.0 zlo 0.0 zhi 8.0e-3", "fix nve all nve/sphere",
-    "fix visc all viscous 1.0e-2", "variable F equal f_w[9]",
-    "fix avF all ave/time 1 1000 1000 v_F", "variable e equal (5.0-f_avF)/5.0",
-    "variable vwall equal -ternary(f_avF<1.5,0.5,0.02*ternary(v_e<-1,-1,v_e))"};
+// top wall to 5 N (about 150 kPa), then left to rest (tests/decks/wall_packing.lmp);
+// Table 1 friction from then on; written once
 
 class Shear : public ::testing::Test {
  public:
@@ -106,11 +91,9 @@ class Shear : public ::testing::Test {
   {
     restart = workfile("shear_packing.restart");
     Lammps lmp;
-    for (const char *line : PACKING_DECK) lmp.cmd(line);
-    for (int chunk = 0; chunk < 80; chunk++)
-      lmp.cmds({"fix_modify w wall hi vel 0 0 $(v_vwall)", "run 1000 post no"});
-    lmp.cmds({"fix_modify w wall hi vel 0 0 0", "unfix visc", "unfix avF", "run 20000",
-              "pair_coeff * * 1.0e6 1.15", "write_restart " + restart});
+    lmp.cmds({"variable restart string " + restart, "variable mut_prep string 0.0",
+              "variable dump string " + workfile("shear_packing.dump"),
+              "include " + deck("wall_packing.lmp")});
   }
   static std::string restart;
 
