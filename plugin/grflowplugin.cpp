@@ -13,7 +13,8 @@
 
 /* ----------------------------------------------------------------------
    Plugin entry point: registers the GRFLOW styles (pair granular/grflow,
-   compute grflow/network, fix grflow/wall, fix grflow/shear) with a PLUGIN-enabled
+   compute grflow/network, fix grflow/wall, fix grflow/shear,
+   fix grflow/compress) with a PLUGIN-enabled
    LAMMPS 4Feb2025 built with the same MPI, LAMMPS_SIZES and compiler.
      plugin load grflowplugin.so
 ------------------------------------------------------------------------- */
@@ -22,6 +23,7 @@
 #include "version.h"
 
 #include "compute_grflow_network.h"
+#include "fix_grflow_compress.h"
 #include "fix_grflow_shear.h"
 #include "fix_grflow_wall.h"
 #include "pair_granular_grflow.h"
@@ -46,6 +48,11 @@ static Fix *fix_grflow_wall_creator(LAMMPS *lmp, int argc, char **argv)
 static Fix *fix_grflow_shear_creator(LAMMPS *lmp, int argc, char **argv)
 {
   return new FixGRFLOWShear(lmp, argc, argv);
+}
+
+static Fix *fix_grflow_compress_creator(LAMMPS *lmp, int argc, char **argv)
+{
+  return new FixGRFLOWCompress(lmp, argc, argv);
 }
 
 extern "C" __attribute__((visibility("default"))) void lammpsplugin_init(void *lmp, void *handle,
@@ -78,5 +85,10 @@ extern "C" __attribute__((visibility("default"))) void lammpsplugin_init(void *l
   plugin.name = "grflow/shear";
   plugin.info = "GRFLOW stress-controlled cyclic simple shear at constant height";
   plugin.creator.v2 = (lammpsplugin_factory2 *) &fix_grflow_shear_creator;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.name = "grflow/compress";
+  plugin.info = "GRFLOW isotropic compression of the cell by all six sides, stress servo";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &fix_grflow_compress_creator;
   (*register_plugin)(&plugin, lmp);
 }

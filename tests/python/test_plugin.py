@@ -34,7 +34,8 @@ def test_plugin_is_self_contained():
 def test_plugin_registers_style(tmp_path):
     out = run_lmp([], tmp_path, stdin=f"plugin load {PLUGIN}\nplugin list\n").stdout
     for style in ("pair style plugin granular/grflow", "compute style plugin grflow/network",
-                  "fix style plugin grflow/wall", "fix style plugin grflow/shear"):
+                  "fix style plugin grflow/wall", "fix style plugin grflow/shear",
+                  "fix style plugin grflow/compress"):
         assert style in out
 
 

@@ -1,0 +1,353 @@
+// clang-format off
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+// clang-format on
+
+/* ----------------------------------------------------------------------
+   Contributing authors: GRFLOW developers
+
+   Isotropic compression of the bi-periodic cell by all six sides: the
+   periodic box shrinks (or grows) in x and y with an affine remap of the
+   fix group, and the two walls of a fix grflow/wall move in z.  A
+   proportional stress servo sets the three strain rates from the
+   stresses of a compute grflow/network, so that sigma_xx, sigma_yy and
+   sigma_zz go to a target and stay there.  Reports the stresses, the
+   kinetic-to-elastic energy ratio and a convergence flag.
+------------------------------------------------------------------------- */
+
+#include "fix_grflow_compress.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "compute.h"
+#include "compute_grflow_network.h"
+#include "domain.h"
+#include "error.h"
+#include "fix_grflow_wall.h"
+#include "force.h"
+#include "math_const.h"
+#include "modify.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+static constexpr int NRESTART = 4;    // rates x y z, started
+
+/* ---------------------------------------------------------------------- */
+
+FixGRFLOWCompress::FixGRFLOWCompress(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), id_wall(nullptr), id_network(nullptr), id_pe(nullptr), wall(nullptr),
+    network(nullptr), pe(nullptr)
+{
+  if (narg < 7)
+    error->all(FLERR, "Illegal fix grflow/compress command: expected wall-ID compute-ID "
+               "p_target rate_max [keyword value ...]");
+  if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag)
+    error->all(FLERR, "Fix grflow/compress requires atom attributes radius, rmass and omega "
+               "(atom_style sphere)");
+  if (domain->triclinic) error->all(FLERR, "Fix grflow/compress requires an orthogonal box");
+  if (!domain->xperiodic || !domain->yperiodic)
+    error->all(FLERR, "Fix grflow/compress requires a box periodic in x and y");
+  if (domain->dimension != 3) error->all(FLERR, "Fix grflow/compress requires a 3d system");
+
+  id_wall = utils::strdup(arg[3]);
+  id_network = utils::strdup(arg[4]);
+  p_target = utils::numeric(FLERR, arg[5], false, lmp);
+  rate_max = utils::numeric(FLERR, arg[6], false, lmp);
+  if (p_target <= 0.0)
+    error->all(FLERR, "Fix grflow/compress p_target must be > 0, got {}", p_target);
+  if (rate_max <= 0.0)
+    error->all(FLERR, "Fix grflow/compress rate_max must be > 0, got {}", rate_max);
+
+  gain = 10.0;
+  tol = 0.01;
+  ke_ratio_max = 1.0e-4;
+  servo_every = 1;
+
+  int iarg = 7;
+  while (iarg < narg) {
+    const std::string kw = arg[iarg];
+    if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, "fix grflow/compress " + kw, error);
+    const double value = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    if (kw == "gain") {
+      gain = value;
+      if (gain <= 0.0) error->all(FLERR, "Fix grflow/compress gain must be > 0, got {}", value);
+    } else if (kw == "tol") {
+      tol = value;
+      if (tol <= 0.0) error->all(FLERR, "Fix grflow/compress tol must be > 0, got {}", value);
+    } else if (kw == "ke_ratio") {
+      ke_ratio_max = value;
+      if (ke_ratio_max <= 0.0)
+        error->all(FLERR, "Fix grflow/compress ke_ratio must be > 0, got {}", value);
+    } else if (kw == "every") {
+      servo_every = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (servo_every < 1)
+        error->all(FLERR, "Fix grflow/compress every must be >= 1, got {}", servo_every);
+    } else {
+      error->all(FLERR, "Unknown fix grflow/compress keyword: {}", kw);
+    }
+    iarg += 2;
+  }
+
+  vector_flag = 1;
+  size_vector = NOUT;
+  global_freq = 1;
+  extvector = 0;
+  restart_global = 1;
+  box_change |= BOX_CHANGE_X | BOX_CHANGE_Y;
+
+  // the elastic energy is the potential energy of the pair style, tallied
+  // on the servo steps only (as fix box/relax does with its compute pe)
+  id_pe = utils::strdup(std::string(id) + "_pe");
+  pe = modify->add_compute(fmt::format("{} all pe", id_pe));
+
+  rate[0] = rate[1] = rate[2] = 0.0;
+  sigma[0] = sigma[1] = sigma[2] = 0.0;
+  errmax = ke = eel = 0.0;
+  vsolid = 0.0;
+  started = 0;
+  dt = update->dt;
+}
+
+/* ---------------------------------------------------------------------- */
+
+FixGRFLOWCompress::~FixGRFLOWCompress()
+{
+  if (modify->get_compute_by_id(id_pe)) modify->delete_compute(id_pe);
+  delete[] id_wall;
+  delete[] id_network;
+  delete[] id_pe;
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixGRFLOWCompress::setmask()
+{
+  return END_OF_STEP;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixGRFLOWCompress::init()
+{
+  auto *ifix = modify->get_fix_by_id(id_wall);
+  if (!ifix) error->all(FLERR, "Fix grflow/compress: fix {} does not exist", id_wall);
+  wall = dynamic_cast<FixGRFLOWWall *>(ifix);
+  if (!wall || strcmp(ifix->style, "grflow/wall") != 0)
+    error->all(FLERR, "Fix grflow/compress: fix {} is not a fix grflow/wall", id_wall);
+  if (!wall->wall(FixGRFLOWWall::LO).active || !wall->wall(FixGRFLOWWall::HI).active)
+    error->all(FLERR, "Fix grflow/compress: fix {} must have both walls, zlo and zhi", id_wall);
+
+  auto *icompute = modify->get_compute_by_id(id_network);
+  if (!icompute) error->all(FLERR, "Fix grflow/compress: compute {} does not exist", id_network);
+  network = dynamic_cast<ComputeGRFLOWNetwork *>(icompute);
+  if (!network || strcmp(icompute->style, "grflow/network") != 0)
+    error->all(FLERR, "Fix grflow/compress: compute {} is not a compute grflow/network",
+               id_network);
+
+  pe = modify->get_compute_by_id(id_pe);
+  if (!pe) error->all(FLERR, "Fix grflow/compress: its compute {} was deleted", id_pe);
+
+  // solid volume of the fix group, for the void ratio
+  const double *radius = atom->radius;
+  const int *mask = atom->mask;
+  double vlocal = 0.0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (mask[i] & groupbit) vlocal += radius[i] * radius[i] * radius[i];
+  MPI_Allreduce(&vlocal, &vsolid, 1, MPI_DOUBLE, MPI_SUM, world);
+  vsolid *= 4.0 / 3.0 * MathConst::MY_PI;
+
+  dt = update->dt;
+
+  // the energy must be tallied on the step the first servo update reads it
+  pe->addstep(update->ntimestep);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixGRFLOWCompress::setup(int /*vflag*/)
+{
+  // update the rates where an uninterrupted run would (the very start and
+  // every N-th step); otherwise keep those of the last update (they and the
+  // wall velocities are in the restart files), so that a run split at any
+  // step gives the same trajectory as one run
+  if (!started || update->ntimestep % servo_every == 0) servo();
+  started = 1;
+  const bigint next = (update->ntimestep / servo_every + 1) * servo_every;
+  pe->addstep(next);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixGRFLOWCompress::end_of_step()
+{
+  if (update->ntimestep % servo_every == 0) {
+    servo();
+    pe->addstep(update->ntimestep + servo_every);
+  }
+  deform_box();
+}
+
+/* ----------------------------------------------------------------------
+   stresses, energies, and new strain rates
+   rate_a = rate_max * clamp(gain * (sigma_aa - p_target) / p_target, -1, 1)
+   (compression is positive, a negative rate shrinks the cell)
+------------------------------------------------------------------------- */
+
+void FixGRFLOWCompress::servo()
+{
+  if (network->invoked_vector != update->ntimestep) network->compute_vector();
+  const double *s = network->vector;
+  sigma[0] = s[ComputeGRFLOWNetwork::SXX];
+  sigma[1] = s[ComputeGRFLOWNetwork::SYY];
+  sigma[2] = s[ComputeGRFLOWNetwork::SZZ];
+
+  errmax = 0.0;
+  for (int a = 0; a < 3; a++) {
+    const double err = (sigma[a] - p_target) / p_target;
+    errmax = MAX(errmax, fabs(err));
+    rate[a] = rate_max * MAX(-1.0, MIN(1.0, gain * err));
+  }
+
+  // kinetic energy, translational and rotational, of the fix group
+  const double *const *v = atom->v;
+  const double *const *omega = atom->omega;
+  const double *rmass = atom->rmass;
+  const double *radius = atom->radius;
+  const int *mask = atom->mask;
+  double kelocal = 0.0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const double vv = v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2];
+    const double ww = omega[i][0] * omega[i][0] + omega[i][1] * omega[i][1] +
+        omega[i][2] * omega[i][2];
+    kelocal += rmass[i] * (vv + 0.4 * radius[i] * radius[i] * ww);
+  }
+  MPI_Allreduce(&kelocal, &ke, 1, MPI_DOUBLE, MPI_SUM, world);
+  ke *= 0.5 * force->mvv2e;
+  eel = pe->compute_scalar();
+
+  drive_walls();
+}
+
+/* ----------------------------------------------------------------------
+   walls move symmetrically: the gap h changes at rate[2] * h
+------------------------------------------------------------------------- */
+
+void FixGRFLOWCompress::drive_walls()
+{
+  const double vz = 0.5 * rate[2] * height();
+  wall->set_velocity(FixGRFLOWWall::LO, 0.0, 0.0, -vz);
+  wall->set_velocity(FixGRFLOWWall::HI, 0.0, 0.0, vz);
+}
+
+/* ----------------------------------------------------------------------
+   scale the box in x and y about its centre, remapping the fix group
+   affinely (as fix deform with remap x)
+------------------------------------------------------------------------- */
+
+void FixGRFLOWCompress::deform_box()
+{
+  if (rate[0] == 0.0 && rate[1] == 0.0) return;
+  domain->x2lamda(atom->nlocal, groupbit);
+  for (int a = 0; a < 2; a++) {
+    const double mid = 0.5 * (domain->boxlo[a] + domain->boxhi[a]);
+    const double half = 0.5 * (domain->boxhi[a] - domain->boxlo[a]) * (1.0 + rate[a] * dt);
+    domain->boxlo[a] = mid - half;
+    domain->boxhi[a] = mid + half;
+  }
+  domain->set_global_box();
+  domain->set_local_box();
+  domain->lamda2x(atom->nlocal, groupbit);
+}
+
+/* ---------------------------------------------------------------------- */
+
+double FixGRFLOWCompress::height() const
+{
+  return wall->wall(FixGRFLOWWall::HI).z - wall->wall(FixGRFLOWWall::LO).z;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixGRFLOWCompress::reset_dt()
+{
+  dt = update->dt;
+}
+
+/* ---------------------------------------------------------------------- */
+
+double FixGRFLOWCompress::compute_vector(int n)
+{
+  const double h = wall ? height() : 0.0;
+  const double volume = domain->xprd * domain->yprd * h;
+  const double ratio = (eel > 0.0) ? ke / eel : (ke > 0.0 ? INFINITY : 0.0);
+  switch (n) {
+    case CONVERGED:
+      return (errmax <= tol && ratio <= ke_ratio_max) ? 1.0 : 0.0;
+    case SXX:
+    case SYY:
+    case SZZ:
+      return sigma[n - SXX];
+    case ERRMAX:
+      return errmax;
+    case KE:
+      return ke;
+    case EEL:
+      return eel;
+    case RATIO:
+      return ratio;
+    case RATE_X:
+    case RATE_Y:
+    case RATE_Z:
+      return rate[n - RATE_X];
+    case VOLUME:
+      return volume;
+    case VOID:
+      return vsolid > 0.0 ? volume / vsolid - 1.0 : 0.0;
+    case LX:
+      return domain->xprd;
+    case LY:
+      return domain->yprd;
+    case HEIGHT:
+      return h;
+  }
+  return 0.0;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixGRFLOWCompress::write_restart(FILE *fp)
+{
+  double list[NRESTART] = {rate[0], rate[1], rate[2], (double) started};
+  if (comm->me == 0) {
+    int size = NRESTART * sizeof(double);
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(list, sizeof(double), NRESTART, fp);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixGRFLOWCompress::restart(char *buf)
+{
+  auto list = (double *) buf;
+  rate[0] = list[0];
+  rate[1] = list[1];
+  rate[2] = list[2];
+  started = (int) list[3];
+}

@@ -1,0 +1,72 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(grflow/compress,FixGRFLOWCompress);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_GRFLOW_COMPRESS_H
+#define LMP_FIX_GRFLOW_COMPRESS_H
+
+#include "fix.h"
+
+namespace LAMMPS_NS {
+
+class FixGRFLOWCompress : public Fix {
+ public:
+  FixGRFLOWCompress(class LAMMPS *, int, char **);
+  ~FixGRFLOWCompress() override;
+  int setmask() override;
+  void init() override;
+  void setup(int) override;
+  void end_of_step() override;
+  void reset_dt() override;
+  double compute_vector(int) override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
+
+  // output vector (0-based)
+  enum {
+    CONVERGED, SXX, SYY, SZZ, ERRMAX, KE, EEL, RATIO, RATE_X, RATE_Y, RATE_Z, VOLUME, VOID,
+    LX, LY, HEIGHT, NOUT
+  };
+
+ private:
+  char *id_wall, *id_network, *id_pe;
+  class FixGRFLOWWall *wall;
+  class ComputeGRFLOWNetwork *network;
+  class Compute *pe;
+  double p_target, rate_max, gain, tol, ke_ratio_max;
+  int servo_every;
+  double dt;
+  double vsolid;
+
+  // servo state (restart): strain rates of x, y and the wall gap
+  double rate[3];
+  int started;
+
+  // last servo step
+  double sigma[3], errmax, ke, eel;
+
+  void servo();
+  void drive_walls();
+  void deform_box();
+  double height() const;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

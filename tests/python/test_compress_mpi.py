@@ -1,0 +1,93 @@
+"""fix grflow/compress gives the same compression with 1 and 2 MPI ranks and
+with newton on or off.
+
+216 spheres on a sparse lattice (tests/decks/compress_cell.lmp) are
+compressed by all six sides to 100 kPa on one rank (170000 steps; written
+to a restart file).  The compression from a gas is chaotic: round-off alone
+(newton off instead of on) changes the final box by 5e-4, so the ranks are
+compared from there: the servo takes the dense packing on to 130 kPa for
+20000 steps.  The ranks split the box along z (processors 1 1 2: the two
+walls on different ranks) or along x (processors 2 1 1: the shrinking
+periodic direction split).  Sums over ranks change the round-off only, so
+the box, the wall gap and the stresses agree closely, not bit for bit.
+
+Environment: LMP (lmp binary), MPIEXEC (mpirun).
+"""
+
+import os
+
+import pytest
+
+from lmprun import DECKS, run_lmp
+
+PREP = """
+include         {cell}
+fix             cmp all grflow/compress w net 1.0e5 20 gain 5 every 10
+thermo          10000
+run             170000
+write_restart   {restart}
+"""
+
+DECK = """
+newton          {newton}
+processors      {grid}
+read_restart    {restart}
+comm_modify     vel yes
+neighbor        0.2e-3 bin
+neigh_modify    delay 0 every 1 check yes
+fix             w all grflow/wall 1.0e6 1.15 mut 0.1 zlo 0 zhi 1
+variable        zlo equal f_w[4]
+variable        zhi equal f_w[10]
+compute         net all grflow/network zlimits v_zlo v_zhi slab 1.0
+fix             nve all nve/sphere
+fix             cmp all grflow/compress w net 1.3e5 20 gain 5 every 10
+thermo          5000
+run             20000
+print           "COMP $(f_cmp[2]:%.17g) $(f_cmp[3]:%.17g) $(f_cmp[4]:%.17g) $(f_cmp[14]:%.17g) $(f_cmp[15]:%.17g) $(f_cmp[16]:%.17g) $(f_cmp[13]:%.17g)"
+"""
+NAMES = ["sxx", "syy", "szz", "Lx", "Ly", "h", "e"]
+
+
+@pytest.fixture(scope="module")
+def packing(tmp_path_factory):
+    work = tmp_path_factory.mktemp("compress_mpi")
+    restart = work / "compressed.restart"
+    deck = work / "prep.lmp"
+    deck.write_text(PREP.format(cell=os.path.join(DECKS, "compress_cell.lmp"), restart=restart))
+    run_lmp(["-in", str(deck)], work)
+    return work, restart
+
+
+def compressed(packing, nprocs, newton, grid):
+    work, restart = packing
+    deck = work / f"compress_{nprocs}_{newton}_{grid.replace(' ', '')}.lmp"
+    deck.write_text(DECK.format(newton=newton, grid=grid, restart=restart))
+    out = run_lmp(["-in", str(deck)], work, nprocs).stdout
+    assert f"{grid.replace(' ', ' by ')} MPI processor grid" in out
+    line = next(l for l in out.splitlines() if l.startswith("COMP"))
+    return dict(zip(NAMES, (float(v) for v in line.split()[1:])))
+
+
+@pytest.fixture(scope="module")
+def reference(packing):
+    return compressed(packing, 1, "on", "1 1 1")
+
+
+def test_reference_is_compressed(reference):
+    print(f"[ measured ] 1 rank: {reference}")
+    for s in ("sxx", "syy", "szz"):
+        assert abs(reference[s] - 1.3e5) < 0.05e5
+    assert 0.5 < reference["e"] < 1.0
+
+
+@pytest.mark.parametrize("nprocs,newton,grid",
+                         [(1, "off", "1 1 1"), (2, "on", "1 1 2"), (2, "off", "2 1 1")])
+def test_same_compression(packing, reference, nprocs, newton, grid):
+    got = compressed(packing, nprocs, newton, grid)
+    diff = {k: abs(got[k] - reference[k]) / abs(reference[k]) for k in NAMES}
+    print(f"[ measured ] np={nprocs} newton={newton} grid={grid}: relative differences "
+          + ", ".join(f"{k} {v:.1e}" for k, v in diff.items()))
+    for k in ("Lx", "Ly", "h", "e"):
+        assert diff[k] < 1e-8, k
+    for k in ("sxx", "syy", "szz"):
+        assert diff[k] < 1e-5, k

@@ -1,0 +1,260 @@
+/* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   fix grflow/compress through the LAMMPS library API, on 216 spheres on a
+   sparse lattice between two walls (tests/decks/compress_cell.lmp):
+   - with no stress yet, the cell shrinks at rate_max in x, y and z: the
+     box edges follow L0 (1 - rate_max dt)^n, the walls move at
+     -+rate_max h0 / 2, the centre stays put;
+   - the servo brings sigma_xx, sigma_yy, sigma_zz (of the compute) to the
+     target and holds them within the tolerance; the convergence flag
+     follows its definition; the void ratio is V / V_solid - 1 from the box,
+     the walls and the radii;
+   - a restart continues the same compression as an uninterrupted run;
+   - bad input gives a clear error.
+------------------------------------------------------------------------- */
+
+#include "lammps_fixture.h"
+
+using namespace grflow_test;
+
+namespace {
+
+// documented vector layout of fix grflow/compress, 0-based
+enum {
+  CONVERGED, SXX, SYY, SZZ, ERRMAX, KE, EEL, RATIO, RATE_X, RATE_Y, RATE_Z, VOLUME, VOID, LX, LY,
+  HEIGHT, NCOMP
+};
+enum { LO_Z = 3, HI_Z = 9, NWALL = 12 };    // fix grflow/wall
+
+const double PT = 1.0e5, RATE = 20.0, DT = 1.0e-7;
+const int EVERY = 10;
+
+std::string compress_cmd(const std::string &extra = "")
+{
+  return "fix cmp all grflow/compress w net " + fmt_double(PT) + " " + fmt_double(RATE) +
+      " gain 5 every " + std::to_string(EVERY) + " " + extra;
+}
+
+void cell(Lammps &lmp)
+{
+  lmp.cmd("include " + deck("compress_cell.lmp"));
+}
+
+std::vector<double> comp(Lammps &lmp) { return lmp.fix_vector("cmp", NCOMP); }
+
+}    // namespace
+
+TEST(Compress, FreeShrinkAtMaximumRate)
+{
+  Lammps lmp;
+  cell(lmp);
+  lmp.cmd(compress_cmd());
+  const double lx0 = lmp.thermo("lx"), ly0 = lmp.thermo("ly");
+  const double xmid = 0.5 * (lmp.thermo("xlo") + lmp.thermo("xhi"));
+  const auto w0 = lmp.fix_vector("w", NWALL);
+  const double h0 = w0[HI_Z] - w0[LO_Z];
+  const int n = EVERY - 1;    // before the second servo update
+  lmp.cmd("run " + std::to_string(n) + " post no");
+  const auto c = comp(lmp);
+  const auto w = lmp.fix_vector("w", NWALL);
+  // spheres apart: no stress, full compression rate everywhere
+  EXPECT_EQ(c[SXX], 0.0);
+  EXPECT_EQ(c[RATE_X], -RATE);
+  EXPECT_EQ(c[RATE_Y], -RATE);
+  EXPECT_EQ(c[RATE_Z], -RATE);
+  const double shrink = std::pow(1.0 - RATE * DT, n);
+  EXPECT_NEAR(lmp.thermo("lx"), lx0 * shrink, 1e-15 * lx0);
+  EXPECT_NEAR(lmp.thermo("ly"), ly0 * shrink, 1e-15 * ly0);
+  EXPECT_NEAR(0.5 * (lmp.thermo("xlo") + lmp.thermo("xhi")), xmid, 1e-15 * lx0);
+  EXPECT_NEAR(w[LO_Z], w0[LO_Z] + n * DT * 0.5 * RATE * h0, 1e-15 * h0);
+  EXPECT_NEAR(w[HI_Z], w0[HI_Z] - n * DT * 0.5 * RATE * h0, 1e-15 * h0);
+  EXPECT_DOUBLE_EQ(c[HEIGHT], w[HI_Z] - w[LO_Z]);
+  EXPECT_DOUBLE_EQ(c[VOLUME], lmp.thermo("lx") * lmp.thermo("ly") * c[HEIGHT]);
+  measured("relative error of Lx after free shrink", fabs(lmp.thermo("lx") / (lx0 * shrink) - 1));
+}
+
+TEST(Compress, AffineRemapInXY)
+{
+  // the fractional x, y of every sphere stay the same while no force acts
+  Lammps lmp;
+  cell(lmp);
+  lmp.cmd(compress_cmd());
+  lmp.cmd("run 0 post no");
+  auto frac = [&]() {
+    const auto x = lmp.gather3("x");
+    const double xlo = lmp.thermo("xlo"), ylo = lmp.thermo("ylo");
+    const double lx = lmp.thermo("lx"), ly = lmp.thermo("ly");
+    std::vector<double> s;
+    for (size_t i = 0; i < x.size(); i += 3) {
+      s.push_back((x[i] - xlo) / lx);
+      s.push_back((x[i + 1] - ylo) / ly);
+    }
+    return s;
+  };
+  const auto s0 = frac();
+  lmp.cmd("run 9 post no");
+  const auto s1 = frac();
+  const double d = max_rel_diff(s1, s0);
+  measured("max change of fractional x, y in a free shrink", d);
+  EXPECT_LT(d, 1e-14);
+}
+
+TEST(Compress, ReachesAndHoldsTarget)
+{
+  Lammps lmp;
+  cell(lmp);
+  lmp.cmd(compress_cmd("tol 0.01 ke_ratio 1.0e-3"));
+  const double tol = 0.01;
+  long first_in = -1;
+  double worst_after = 0.0, min_e = 1e30;
+  bool flag_ok = true;
+  int nconv = 0;
+  for (int k = 0; k < 60; k++) {
+    lmp.cmd("run 5000 post no");
+    const auto c = comp(lmp);
+    const auto net = (double *) lammps_extract_compute(lmp.handle, "net", LMP_STYLE_GLOBAL,
+                                                       LMP_TYPE_VECTOR);
+    ASSERT_NE(net, nullptr);
+    // the stresses are the compute's (this is a servo step)
+    EXPECT_EQ(c[SXX], net[0]);
+    EXPECT_EQ(c[SYY], net[1]);
+    EXPECT_EQ(c[SZZ], net[2]);
+    double err = 0.0;
+    for (int a = 0; a < 3; a++) err = std::max(err, fabs(c[SXX + a] - PT) / PT);
+    EXPECT_DOUBLE_EQ(c[ERRMAX], err);
+    const bool conv = err <= tol && c[RATIO] <= 1.0e-3;
+    if (c[CONVERGED] != (conv ? 1.0 : 0.0)) flag_ok = false;
+    nconv += conv;
+    if (c[EEL] > 0.0) EXPECT_DOUBLE_EQ(c[RATIO], c[KE] / c[EEL]);
+    if (first_in < 0 && err <= tol) first_in = (long) lmp.thermo("step");
+    if (first_in >= 0) worst_after = std::max(worst_after, err);
+    min_e = std::min(min_e, c[VOID]);
+  }
+  EXPECT_TRUE(flag_ok);
+  ASSERT_GE(first_in, 0) << "never within tolerance";
+  printf("[ measured ] first within 1%% of %g Pa at step %ld; worst error after that %.2e; "
+         "converged at %d of 60 samples; final e = %.4f\n",
+         PT, first_in, worst_after, nconv, comp(lmp)[VOID]);
+  EXPECT_LT(first_in, 250000);
+  EXPECT_LE(worst_after, tol);    // held
+  EXPECT_GT(nconv, 10);
+  const auto c = comp(lmp);
+  EXPECT_EQ(c[CONVERGED], 1.0);
+
+  // the void ratio from the box, the walls and the radii
+  std::vector<double> rad(lmp.natoms());
+  lammps_gather_atoms(lmp.handle, (char *) "radius", 1, 1, rad.data());
+  double vs = 0.0;
+  for (double r : rad) vs += 4.0 / 3.0 * M_PI * r * r * r;
+  const auto w = lmp.fix_vector("w", NWALL);
+  const double v = lmp.thermo("lx") * lmp.thermo("ly") * (w[HI_Z] - w[LO_Z]);
+  EXPECT_NEAR(c[VOID], v / vs - 1.0, 1e-12);
+  EXPECT_GT(c[VOID], 0.5);    // a real packing, not overlapped
+  EXPECT_LT(c[VOID], 1.0);
+  // the elastic energy is the pair's potential energy
+  EXPECT_NEAR(c[EEL], lmp.thermo("pe"), 1e-12 * c[EEL]);
+}
+
+TEST(Compress, RestartContinues)
+{
+  const std::string file = workfile("compress.restart");
+  std::vector<double> ref, got;
+  {
+    Lammps lmp;
+    cell(lmp);
+    lmp.cmds({compress_cmd(), "run 150005 post no"});
+    lmp.cmd("write_restart " + file);
+    lmp.cmd("run 20000 post no");
+    ref = comp(lmp);
+    ref.push_back(lmp.thermo("lx"));
+  }
+  {
+    Lammps lmp;
+    lmp.cmds({"read_restart " + file, "comm_modify vel yes", "neighbor 0.2e-3 bin",
+              "neigh_modify delay 0 every 1 check yes",
+              "fix w all grflow/wall 1.0e6 1.15 mut 0.1 zlo 0 zhi 1", "variable zlo equal f_w[4]",
+              "variable zhi equal f_w[10]",
+              "compute net all grflow/network zlimits v_zlo v_zhi slab 1.0",
+              "fix nve all nve/sphere", compress_cmd(), "run 20000 post no"});
+    got = comp(lmp);
+    got.push_back(lmp.thermo("lx"));
+  }
+  // restarted neighbor lists sum in another order: round-off only
+  for (int k : {SXX, SYY, SZZ, RATE_X, RATE_Z, VOLUME, HEIGHT, NCOMP}) {
+    const double d = fabs(got[k] - ref[k]) / std::max(fabs(ref[k]), 1e-300);
+    EXPECT_LT(d, 1e-6) << "entry " << k << ": " << got[k] << " vs " << ref[k];
+  }
+  measured("restart: relative difference of sigma_zz after 20000 steps",
+           fabs(got[SZZ] / ref[SZZ] - 1.0));
+  measured("restart: relative difference of Lx", fabs(got[NCOMP] / ref[NCOMP] - 1.0));
+}
+
+TEST(Compress, BadInput)
+{
+  const std::vector<std::string> base = {"include " + deck("compress_cell.lmp")};
+  struct Case {
+    const char *line, *expect;
+  } cases[] = {
+      {"fix c all grflow/compress w net 1e5", "Illegal fix grflow/compress command"},
+      {"fix c all grflow/compress w net -1e5 10", "p_target must be > 0"},
+      {"fix c all grflow/compress w net 1e5 0", "rate_max must be > 0"},
+      {"fix c all grflow/compress w net 1e5 10 gain -1", "gain must be > 0"},
+      {"fix c all grflow/compress w net 1e5 10 tol 0", "tol must be > 0"},
+      {"fix c all grflow/compress w net 1e5 10 ke_ratio 0", "ke_ratio must be > 0"},
+      {"fix c all grflow/compress w net 1e5 10 every 0", "every must be >= 1"},
+      {"fix c all grflow/compress w net 1e5 10 bogus 1", "Unknown fix grflow/compress keyword"},
+      {"fix c all grflow/compress w net 1e5 10 every", "fix grflow/compress every"},
+      {"fix c all grflow/compress w net 1e5 ten", "Expected floating point"},
+  };
+  for (const auto &c : cases) {
+    const std::string msg = error_after(base, c.line);
+    EXPECT_NE(msg.find(c.expect), std::string::npos) << c.line << " -> '" << msg << "'";
+  }
+
+  struct InitCase {
+    std::vector<std::string> extra;
+    const char *line, *expect;
+  } init_cases[] = {
+      {{}, "fix c all grflow/compress nowall net 1e5 10",
+       "Fix grflow/compress: fix nowall does not exist"},
+      {{}, "fix c all grflow/compress nve net 1e5 10",
+       "Fix grflow/compress: fix nve is not a fix grflow/wall"},
+      {{}, "fix c all grflow/compress w nonet 1e5 10",
+       "Fix grflow/compress: compute nonet does not exist"},
+      {{"compute ke all ke"}, "fix c all grflow/compress w ke 1e5 10",
+       "Fix grflow/compress: compute ke is not a compute grflow/network"},
+      {{"unfix w", "fix w all grflow/wall 1.0e6 1.15 zlo 0"},
+       "fix c all grflow/compress w net 1e5 10", "must have both walls"},
+      {{"fix def all deform 1 x scale 0.99"}, "fix c all grflow/compress w net 1e5 10",
+       "Must not have multiple fixes change box parameter x"},
+  };
+  for (const auto &c : init_cases) {
+    auto s = base;
+    s.insert(s.end(), c.extra.begin(), c.extra.end());
+    s.push_back(c.line);
+    const std::string msg = error_after(s, "run 0");
+    EXPECT_NE(msg.find(c.expect), std::string::npos) << c.line << " -> '" << msg << "'";
+  }
+
+  // the cell must be periodic in x and y
+  const std::string msg = error_after(
+      {"units si", "atom_style sphere", "boundary p f f", "region box block 0 0.01 0 0.01 0 0.01",
+       "create_box 1 box", "create_atoms 1 single 0.005 0.005 0.005",
+       "set atom 1 diameter 1.0e-3 density 2650", "comm_modify vel yes",
+       "pair_style granular/grflow", "pair_coeff * * 1.0e6 1.15",
+       "fix w all grflow/wall 1.0e6 1.15 zlo 0.001 zhi 0.009", "compute net all grflow/network"},
+      "fix c all grflow/compress w net 1e5 10");
+  EXPECT_NE(msg.find("requires a box periodic in x and y"), std::string::npos) << msg;
+}
