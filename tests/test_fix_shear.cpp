@@ -43,7 +43,7 @@ namespace {
 // documented vector layout of fix grflow/shear, 0-based
 enum {
   DIRECTION, REVERSALS, XWALL, GAMMA, TAU, PRESS, RU, P0, STEP_IL, TIME_IL, CYCLES_IL, CYCLES,
-  DONE, NSHEAR
+  DONE, EVENT, NSHEAR
 };
 // fix grflow/wall: per wall Fx Fy Fz z dx dy
 enum { LO_Z = 3, HI_Z = 9, HI_DX = 10, NWALL = 12 };
@@ -155,7 +155,8 @@ TEST_F(Shear, WallVelocityAndReversalRule)
   EXPECT_EQ(rec[0].sh[REVERSALS], rec[0].net[C_TAU] >= amp ? 1.0 : 0.0);
 
   double xw = rec[0].wall[HI_DX], xerr = 0.0;
-  int dir = 1, nrev = 0, nplus = 0, nminus = 0;
+  int dir = 1, nrev = 0, nplus = 0, nminus = 0, nzero = 0;
+  bool await_zero = false;
   std::vector<long> rev_steps;
   const double h0 = rec[0].wall[HI_Z] - rec[0].wall[LO_Z];
   for (size_t k = 0; k < rec.size(); k++) {
@@ -172,12 +173,22 @@ TEST_F(Shear, WallVelocityAndReversalRule)
     ASSERT_EQ(r.sh[RU], r.net[C_RU]) << r.step;
     // the rule, applied by hand
     const double tau = r.net[C_TAU];
+    int event = 0;
+    if (await_zero && ((dir < 0 && tau <= 0.0) || (dir > 0 && tau >= 0.0))) {
+      await_zero = false;
+      event = 2;
+      nzero++;
+    }
     if ((dir > 0 && tau >= amp) || (dir < 0 && tau <= -amp)) {
       (dir > 0 ? nplus : nminus)++;
       dir = -dir;
       nrev++;
       rev_steps.push_back(r.step);
+      await_zero = true;
+      event = 1;
     }
+    // the event flag: 1 on a reversal step, 2 on the first zero-crossing after one
+    ASSERT_EQ(r.sh[EVENT], event) << "step " << r.step;
     ASSERT_EQ(r.sh[DIRECTION], dir) << "step " << r.step << " tau " << tau;
     ASSERT_EQ(r.sh[REVERSALS], nrev) << "step " << r.step;
     EXPECT_EQ(r.sh[CYCLES], 0.5 * nrev);
@@ -198,6 +209,7 @@ TEST_F(Shear, WallVelocityAndReversalRule)
   EXPECT_LT(xerr, 1.0e-18);
   // not trivial: reversals both ways
   EXPECT_GE(nplus, 2);
+  EXPECT_GE(nzero, 3);
   EXPECT_GE(nminus, 2);
 }
 

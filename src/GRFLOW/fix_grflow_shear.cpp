@@ -33,6 +33,7 @@
 #include "fix_grflow_wall.h"
 #include "group.h"
 #include "modify.h"
+#include "platform.h"
 #include "update.h"
 
 #include <cmath>
@@ -42,6 +43,7 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 
 static constexpr int NRESTART = 8;
+enum { NO_EVENT, EVENT_REVERSAL, EVENT_ZERO };
 
 /* ---------------------------------------------------------------------- */
 
@@ -63,6 +65,7 @@ FixGRFLOWShear::FixGRFLOWShear(LAMMPS *lmp, int narg, char **arg) :
   ru_liq = 0.99;
   check_every = 1;
   stop_cycles_after_il = stop_cycles = stop_gamma = 0.0;
+  progress = 1;
 
   int iarg = 7;
   while (iarg < narg) {
@@ -86,6 +89,8 @@ FixGRFLOWShear::FixGRFLOWShear(LAMMPS *lmp, int narg, char **arg) :
     } else if (kw == "stop_gamma") {
       stop_gamma = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (stop_gamma <= 0.0) error->all(FLERR, "Fix grflow/shear stop_gamma must be > 0");
+    } else if (kw == "progress") {
+      progress = utils::logical(FLERR, arg[iarg + 1], false, lmp);
     } else if (kw == "glue") {
       iglue = group->find(arg[iarg + 1]);
       if (iglue < 0) error->all(FLERR, "Fix grflow/shear glue group {} does not exist", arg[iarg + 1]);
@@ -115,6 +120,11 @@ FixGRFLOWShear::FixGRFLOWShear(LAMMPS *lmp, int narg, char **arg) :
   step_il = -1;
   p0 = 0.0;
   time_il = -1.0;
+  await_zero = 0;
+  event_step = -1;
+  event_kind = NO_EVENT;
+  wall_start = wall_last = 0.0;
+  step_last = 0;
   tau = press = ru = 0.0;
   dt = update->dt;
 }
@@ -183,6 +193,8 @@ void FixGRFLOWShear::setup(int /*vflag*/)
   network->set_p0(p0);
   network->compute_vector();
   drive_wall();
+  wall_start = wall_last = platform::walltime();
+  step_last = update->ntimestep;
   // read tau, p, r_u for output; apply the reversal and liquefaction rules
   // only where an uninterrupted run would (every N-th step, and the very
   // start), so that a run split at any step (run N run M, read_restart)
@@ -251,16 +263,46 @@ void FixGRFLOWShear::check(bool decide)
   ru = network->vector[ComputeGRFLOWNetwork::RU];
   if (!decide) return;
 
+  // the first zero-crossing of tau after a reversal (tau moves from the
+  // amplitude just reached towards the other side)
+  if (await_zero && ((direction < 0 && tau <= 0.0) || (direction > 0 && tau >= 0.0))) {
+    await_zero = 0;
+    event_step = update->ntimestep;
+    event_kind = EVENT_ZERO;
+  }
   if ((direction > 0 && tau >= tau_amp) || (direction < 0 && tau <= -tau_amp)) {
     direction = -direction;
     reversals++;
+    await_zero = 1;
+    event_step = update->ntimestep;
+    event_kind = EVENT_REVERSAL;
     drive_wall();
+    if (progress) report();
   }
   if (step_il < 0 && ru >= ru_liq) {
     step_il = update->ntimestep;
     time_il = update->atime + (update->ntimestep - update->atimestep) * update->dt;
     reversals_il = reversals;
   }
+}
+
+/* ----------------------------------------------------------------------
+   one progress line per reversal (screen and log)
+------------------------------------------------------------------------- */
+
+void FixGRFLOWShear::report()
+{
+  const double now = platform::walltime();
+  const double rate = (now > wall_last) ? (update->ntimestep - step_last) / (now - wall_last) : 0.0;
+  if (comm->me == 0)
+    utils::logmesg(lmp,
+                   "grflow/shear {}: reversal {} cycle {:.2f} step {} gamma {:.6g} tau {:.6g} "
+                   "r_u {:.4f}{} elapsed {:.1f} s {:.0f} steps/s\n",
+                   id, reversals, 0.5 * reversals, update->ntimestep,
+                   wall->wall(FixGRFLOWWall::HI).disp[0] / height(), tau, ru,
+                   step_il >= 0 ? " (liquefied)" : "", now - wall_start, rate);
+  wall_last = now;
+  step_last = update->ntimestep;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -317,6 +359,8 @@ double FixGRFLOWShear::compute_vector(int n)
       if (stop_gamma > 0.0 && wall && fabs(xw / height()) >= stop_gamma) done = 1;
       return done;
     }
+    case EVENT:
+      return (event_step == update->ntimestep) ? event_kind : NO_EVENT;
   }
   return 0.0;
 }
@@ -326,7 +370,7 @@ double FixGRFLOWShear::compute_vector(int n)
 void FixGRFLOWShear::write_restart(FILE *fp)
 {
   double list[NRESTART] = {(double) started, (double) direction, (double) reversals,
-                           (double) reversals_il, (double) step_il, p0, time_il, 0.0};
+                           (double) reversals_il, (double) step_il, p0, time_il, (double) await_zero};
   if (comm->me == 0) {
     int size = NRESTART * sizeof(double);
     fwrite(&size, sizeof(int), 1, fp);
@@ -346,4 +390,5 @@ void FixGRFLOWShear::restart(char *buf)
   step_il = (bigint) list[4];
   p0 = list[5];
   time_il = list[6];
+  await_zero = (int) list[7];
 }

@@ -41,7 +41,7 @@ class FixGRFLOWShear : public Fix {
   // output vector (0-based)
   enum {
     DIRECTION, REVERSALS, XWALL, GAMMA, TAU, PRESS, RU, P0, STEP_IL, TIME_IL, CYCLES_IL,
-    CYCLES, DONE, NOUT
+    CYCLES, DONE, EVENT, NOUT
   };
 
  private:
@@ -58,11 +58,20 @@ class FixGRFLOWShear : public Fix {
   int started, direction;
   bigint reversals, reversals_il, step_il;
   double p0, time_il;
+  int await_zero;    // a reversal happened, tau has not crossed zero since
+
+  // events and progress
+  bigint event_step;
+  int event_kind;
+  int progress;
+  double wall_start, wall_last;
+  bigint step_last;
 
   // last check
   double tau, press, ru;
 
   void check(bool decide = true);
+  void report();
   void drive_wall();
   double height() const;
 };
