@@ -201,6 +201,32 @@ TEST(Compress, RestartContinues)
   measured("restart: relative difference of Lx", fabs(got[NCOMP] / ref[NCOMP] - 1.0));
 }
 
+TEST(Compress, WallCoefficientByFixModify)
+{
+  // fix_modify w mut 0.1 on a wall made with mut 0.5 gives the trajectory of
+  // a wall made with mut 0.1, through the contact-rich end of a compression
+  auto run = [](bool modify) {
+    Lammps lmp;
+    lmp.cmds({"variable mut string " + std::string(modify ? "0.5" : "0.1"),
+              "include " + deck("compress_cell.lmp"), "pair_coeff * * 1.0e6 1.15 mut 0.1"});
+    if (modify) lmp.cmd("fix_modify w mut 0.1");
+    lmp.cmds({compress_cmd(), "run 170000 post no"});
+    auto x = lmp.gather3("x");
+    const auto w = lmp.fix_vector("w", NWALL);
+    x.push_back(w[2]);    // normal force on the bottom wall
+    return x;
+  };
+  const auto a = run(true), b = run(false);
+  EXPECT_EQ(a, b);
+  EXPECT_GT(fabs(b.back()), 1.0);    // the wall carries load (N)
+  EXPECT_NE(error_after({"include " + deck("compress_cell.lmp")}, "fix_modify w mut -1")
+                .find("fix_modify w mut must be >= 0, got -1"),
+            std::string::npos);
+  EXPECT_NE(error_after({"include " + deck("compress_cell.lmp")}, "fix_modify w kn 0")
+                .find("fix_modify w kn must be > 0"),
+            std::string::npos);
+}
+
 TEST(Compress, BadInput)
 {
   const std::vector<std::string> base = {"include " + deck("compress_cell.lmp")};

@@ -53,7 +53,6 @@ FixGRFLOWWall::FixGRFLOWWall(LAMMPS *lmp, int narg, char **arg) :
     error->all(FLERR, "Fix grflow/wall requires atom attributes radius, omega and torque "
                "(atom_style sphere)");
 
-  double coeff_value[NCOEFF];
   int iarg = parse_coeffs(lmp, "fix grflow/wall", narg, arg, 3, true, coeff_value);
   pack_coeffs(coeff_value, coeff);
 
@@ -290,6 +289,19 @@ double FixGRFLOWWall::compute_vector(int n)
 
 int FixGRFLOWWall::modify_param(int narg, char **arg)
 {
+  // a contact coefficient, e.g. the friction between stages; the contact
+  // histories are kept
+  for (int k = 0; k < NCOEFF; k++) {
+    if (strcmp(arg[0], COEFF_NAMES[k]) != 0) continue;
+    if (narg < 2) utils::missing_cmd_args(FLERR, fmt::format("fix_modify {} {}", id, arg[0]), error);
+    const double value = utils::numeric(FLERR, arg[1], false, lmp);
+    if (value < 0.0 || (k == KN && value == 0.0))
+      error->all(FLERR, "fix_modify {} {} must be {}, got {}", id, arg[0],
+                 k == KN ? "> 0" : ">= 0", value);
+    coeff_value[k] = value;
+    pack_coeffs(coeff_value, coeff);
+    return 2;
+  }
   if (strcmp(arg[0], "wall") != 0) return 0;
   if (narg < 4) utils::missing_cmd_args(FLERR, "fix_modify grflow/wall wall", error);
   int iw;

@@ -77,6 +77,7 @@ class FixGRFLOWWall : public Fix {
 
  private:
   GRFLOW::ContactCoeffs coeff;
+  double coeff_value[GRFLOW::NCOEFF];    // as parsed, changed by fix_modify
   int full_arm;
   double dt;
   Wall walls[NWALL];
