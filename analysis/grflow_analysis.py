@@ -1,0 +1,694 @@
+# GRFLOW analysis: read a run directory written by the GRFLOW decks and
+# extract the quantities of the isochoric cyclic shearing paper.
+# Part of GRFLOW, distributed under the GNU General Public License v2
+# (see LICENSE at the top of the repository).
+"""Library behind ``analysis/make_figures.py``.
+
+The run directory format is that of ``inputs/README.md``: ``prep.json``,
+``series.txt`` (36 named columns), ``snapshots/atoms.*.txt`` (dump custom)
+and ``snapshots/contacts.*.txt`` (dump local).  Everything here is a pure
+function of its arguments (no plotting, no printing); rows of the series
+are referred to by their index in the arrays returned by
+:func:`read_series`.
+
+Definitions (section numbers of the paper, paper/isochoric-cyclic-shearing.md):
+
+* fractional cycle count N (inputs/README.md): shear starts at N = 0;
+  reversal k is at N = k/2 - 1/4, the first zero-crossing of tau after it at
+  N = k/2; linear in time in between (see :func:`cycle_count`);
+* initial liquefaction: first row with r_u >= ru_liq, N_IL its N (sec. 3);
+* liquefaction exit: a row after the onset with r_u < ru_liq whose previous
+  row had r_u >= ru_liq (sec. 3: "exits liquefaction state when r_u < 0.99");
+* cycle n runs from N = n to N = n + 1; its states (sec. 3, Fig. 2) are
+  C0 (N = n), C0' (first exit at or after C0, before C1), C1 (N = n + 1/4),
+  C2 (N = n + 1/2), C2' (first exit at or after C2, before C3),
+  C3 (N = n + 3/4) (see :func:`find_cycle_states`).
+"""
+
+import json
+import math
+import os
+import re
+import warnings
+
+import numpy as np
+
+SERIES_COLUMNS = tuple(
+    "step time reversals direction x_w gamma tau p r_u z_g a_c N_c N_p "
+    "floaters sxx syy szz sxy sxz syz zlo zhi inertial".split()
+    + ["P%d" % c for c in range(13)])
+REQUIRED_COLUMNS = ("step", "time", "reversals", "gamma", "tau", "p", "r_u",
+                    "z_g", "a_c")
+PC_COLUMNS = tuple("P%d" % c for c in range(13))
+STATES = ("C0", "C0'", "C1", "C2", "C2'", "C3")
+DEFAULT_RU_LIQ = 0.99
+DEFAULT_TAU_AMP = 25.0e3
+NOT_REACHED = "not reached"
+NOT_AVAILABLE = "not available"
+
+
+class FormatError(ValueError):
+    """A run-directory file that does not follow inputs/README.md."""
+
+
+# ---------------------------------------------------------------- reading
+
+def _canonical(name):
+    """Column name as in SERIES_COLUMNS (tolerates TimeStep, v_/c_/f_ prefixes)."""
+    if name.lower() == "timestep":
+        return "step"
+    for prefix in ("v_", "c_", "f_"):
+        if name.startswith(prefix) and name[2:] in SERIES_COLUMNS:
+            return name[2:]
+    return name
+
+
+def read_series(path):
+    """Read ``series.txt``; return a dict of float arrays keyed by column name.
+
+    The column names are those of the last ``#`` comment line before the
+    first data row; if there is none (or it does not have as many names as
+    the rows have fields) and the rows have 36 fields, the documented order
+    SERIES_COLUMNS is assumed.  Comment lines later in the file are skipped.
+    Should the steps not increase strictly (a resumed run that repeated
+    rows), a repeated step replaces the rows it overlaps, with a warning.
+    Raises FileNotFoundError, or FormatError when the file is malformed
+    (no data, ragged or non-numeric rows, missing required columns).
+    """
+    header = None
+    nfields = None
+    with open(path) as f:
+        for line in f:
+            s = line.strip()
+            if not s:
+                continue
+            if s.startswith("#"):
+                header = s.lstrip("#").split()
+                continue
+            nfields = len(s.split())
+            break
+    if nfields is None:
+        raise FormatError("%s: no data rows" % path)
+    if header is None or len(header) != nfields:
+        if nfields == len(SERIES_COLUMNS):
+            header = list(SERIES_COLUMNS)
+        else:
+            raise FormatError("%s: the column names (last '#' line before the data) "
+                              "do not match the %d fields of the first row"
+                              % (path, nfields))
+    names = [_canonical(h) for h in header]
+    if len(set(names)) != len(names):
+        raise FormatError("%s: repeated column names in %s" % (path, " ".join(header)))
+    missing = [c for c in REQUIRED_COLUMNS if c not in names]
+    if missing:
+        raise FormatError("%s: missing column(s) %s" % (path, ", ".join(missing)))
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            data = np.loadtxt(path, comments="#", ndmin=2, dtype=float)
+    except ValueError:
+        _locate_bad_row(path, len(names))
+        raise FormatError("%s: unreadable data rows" % path)
+    if data.shape[1] != len(names):
+        raise FormatError("%s: rows have %d fields, %d columns are named"
+                          % (path, data.shape[1], len(names)))
+    data = _drop_repeated_steps(data, names.index("step"), path)
+    return {n: data[:, i].copy() for i, n in enumerate(names)}
+
+
+def _locate_bad_row(path, ncol):
+    """Raise FormatError naming the first ragged or non-numeric data line."""
+    with open(path) as f:
+        for lineno, line in enumerate(f, 1):
+            s = line.strip()
+            if not s or s.startswith("#"):
+                continue
+            fields = s.split()
+            if len(fields) != ncol:
+                raise FormatError("%s:%d: %d fields, expected %d"
+                                  % (path, lineno, len(fields), ncol))
+            try:
+                [float(x) for x in fields]
+            except ValueError:
+                raise FormatError("%s:%d: non-numeric field" % (path, lineno))
+
+
+def _drop_repeated_steps(data, col, path):
+    steps = data[:, col]
+    if len(steps) < 2 or np.all(np.diff(steps) > 0):
+        return data
+    warnings.warn("%s: steps do not increase strictly; later rows replace "
+                  "earlier rows from the same step on" % path)
+    keep = []
+    for i, s in enumerate(steps):
+        while keep and steps[keep[-1]] >= s:
+            keep.pop()
+        keep.append(i)
+    return data[keep]
+
+
+def read_prep(path):
+    """Read ``prep.json`` into a dict (FileNotFoundError, or FormatError if not a JSON object)."""
+    with open(path) as f:
+        try:
+            prep = json.load(f)
+        except ValueError as err:
+            raise FormatError("%s: %s" % (path, err))
+    if not isinstance(prep, dict):
+        raise FormatError("%s: not a JSON object" % path)
+    return prep
+
+
+def protocol(prep):
+    """(ru_liq, tau_amp) from prep.json, defaulting to 0.99 and 25e3 Pa."""
+    prep = prep or {}
+    ru_liq = prep.get("ru_liq")
+    tau_amp = prep.get("tau_amp")
+    ru_liq = float(ru_liq) if _is_number(ru_liq) and ru_liq > 0 else DEFAULT_RU_LIQ
+    tau_amp = float(tau_amp) if _is_number(tau_amp) and tau_amp > 0 else DEFAULT_TAU_AMP
+    return ru_liq, tau_amp
+
+
+def _is_number(x):
+    return isinstance(x, (int, float)) and not isinstance(x, bool) and math.isfinite(x)
+
+
+def read_dump(path):
+    """Read the first frame of a LAMMPS text dump (custom or local).
+
+    Returns a dict: ``step`` (int), ``box`` (3x2 array of lo/hi; for a
+    triclinic box the first two numbers of each line), ``item`` ("ATOMS" or
+    "ENTRIES") and ``columns`` (dict of float arrays by column name; a column
+    named with a LAMMPS prefix, e.g. ``v_glue``, is also under its bare
+    name, ``glue``).
+    Raises FormatError if the file does not follow the dump format.
+    """
+    with open(path) as f:
+        lines = f.read().splitlines()
+    step = count = box = None
+    i = 0
+    while i < len(lines):
+        line = lines[i].strip()
+        i += 1
+        if not line.startswith("ITEM:"):
+            if line:
+                raise FormatError("%s:%d: expected an ITEM line" % (path, i))
+            continue
+        item = line[5:].strip()
+        try:
+            if item == "TIMESTEP":
+                step = int(lines[i].split()[0])
+                i += 1
+            elif item.startswith("NUMBER OF"):
+                count = int(lines[i].split()[0])
+                i += 1
+            elif item.startswith("BOX BOUNDS"):
+                box = np.array([[float(v) for v in lines[i + k].split()[:2]]
+                                for k in range(3)])
+                i += 3
+            elif item.split()[0] in ("ATOMS", "ENTRIES"):
+                kind, names = item.split()[0], item.split()[1:]
+                if count is None:
+                    raise FormatError("%s: no NUMBER OF %s before the data" % (path, kind))
+                rows = lines[i:i + count]
+                if len(rows) < count:
+                    raise FormatError("%s: %d %s announced, %d present"
+                                      % (path, count, kind.lower(), len(rows)))
+                if count:
+                    with warnings.catch_warnings():
+                        warnings.simplefilter("ignore")
+                        data = np.loadtxt(rows, ndmin=2, dtype=float)
+                else:
+                    data = np.zeros((0, len(names)))
+                if data.shape[1] != len(names):
+                    raise FormatError("%s: %d fields per %s line, %d named"
+                                      % (path, data.shape[1], kind.lower(), len(names)))
+                cols = {n: data[:, k].copy() for k, n in enumerate(names)}
+                for n in names:         # v_glue, c_id etc. also under their bare name
+                    if n[:2] in ("v_", "c_", "f_", "i_", "d_") and n[2:] not in cols:
+                        cols[n[2:]] = cols[n]
+                return {"step": step, "box": box, "item": kind, "columns": cols}
+        except (IndexError, ValueError) as err:
+            if isinstance(err, FormatError):
+                raise
+            raise FormatError("%s:%d: malformed %s section (%s)" % (path, i, item, err))
+    raise FormatError("%s: no ATOMS or ENTRIES section" % path)
+
+
+def read_dump_atoms(path):
+    """Read ``snapshots/atoms.*.txt``; columns id, radius, x, y, z, glue required."""
+    d = read_dump(path)
+    need = ("id", "radius", "x", "y", "z", "glue")
+    if d["item"] != "ATOMS" or any(n not in d["columns"] for n in need):
+        raise FormatError("%s: expected ITEM: ATOMS with %s" % (path, " ".join(need)))
+    return d
+
+
+def read_dump_local(path):
+    """Read ``snapshots/contacts.*.txt``; columns id1, id2, fn required."""
+    d = read_dump(path)
+    need = ("id1", "id2", "fn")
+    if d["item"] != "ENTRIES" or any(n not in d["columns"] for n in need):
+        raise FormatError("%s: expected ITEM: ENTRIES with %s" % (path, " ".join(need)))
+    return d
+
+
+def list_snapshots(run_dir, kind="atoms"):
+    """Shear-stage snapshot files of a run, as a sorted list of (step, path)."""
+    snapdir = os.path.join(run_dir, "snapshots")
+    out = []
+    if os.path.isdir(snapdir):
+        pat = re.compile(r"^%s\.(\d+)\.txt$" % kind)
+        for name in os.listdir(snapdir):
+            m = pat.match(name)
+            if m:
+                out.append((int(m.group(1)), os.path.join(snapdir, name)))
+    return sorted(out)
+
+
+# ---------------------------------------------------------------- cycles
+
+def cycle_events(series):
+    """Quarter-cycle events found in the series.
+
+    Returns a dict with ``reversal_rows`` (list; entry k-1 is the first row
+    whose ``reversals`` >= k), ``crossing_rows`` (dict k -> row or None: the
+    first row after reversal k, before reversal k+1, where tau has the sign
+    of the new direction, i.e. tau <= 0 after an odd reversal (made at
+    +tau_amp), tau >= 0 after an even one; k = 0 is the shear start, row 0
+    when no reversal precedes the series), and ``rows``/``N``: the event rows
+    in time order with their N values (0 for the start, k/2 - 1/4 for
+    reversal k, k/2 for the crossing after reversal k).
+    """
+    rev = np.maximum.accumulate(np.rint(series["reversals"]).astype(np.int64))
+    tau = series["tau"]
+    nrow = len(rev)
+    k0, kmax = int(rev[0]), int(rev[-1])
+    reversal_rows = [None] * kmax
+    for k in range(k0 + 1, kmax + 1):
+        reversal_rows[k - 1] = int(np.searchsorted(rev, k, side="left"))
+    crossing_rows = {}
+    if k0 == 0:
+        crossing_rows[0] = 0
+    for k in range(max(k0, 1), kmax + 1):
+        start = reversal_rows[k - 1]
+        if start is None:       # reversal before the first row: unknown
+            crossing_rows[k] = None
+            continue
+        stop = reversal_rows[k] if k < kmax else nrow
+        sign = -1.0 if k % 2 else 1.0
+        hit = np.nonzero(sign * tau[start + 1:stop] >= 0.0)[0]
+        crossing_rows[k] = int(start + 1 + hit[0]) if len(hit) else None
+    events = []
+    if k0 == 0:
+        events.append((0, 0.0))
+    for k in range(k0 + 1, kmax + 1):
+        events.append((reversal_rows[k - 1], k / 2.0 - 0.25))
+    for k, row in crossing_rows.items():
+        if k > 0 and row is not None:
+            events.append((row, k / 2.0))
+    events.sort()
+    rows, Ns = [], []
+    for row, n in events:
+        if rows and row == rows[-1]:      # two events on one row: keep the later one
+            rows.pop()
+            Ns.pop()
+        rows.append(row)
+        Ns.append(n)
+    return {"reversal_rows": reversal_rows, "crossing_rows": crossing_rows,
+            "rows": rows, "N": Ns}
+
+
+def cycle_count(series, events=None):
+    """Fractional number of cycles N at every row (inputs/README.md).
+
+    N is 0 at time 0 (shear start), k/2 - 1/4 at reversal k, k/2 at the first
+    zero-crossing of tau after reversal k, each event at the time of the
+    first row where it is seen, and linear in time between events.  After
+    the last event N is extrapolated linearly with the rate of the last
+    interval between events (a quarter cycle), capped at a quarter cycle
+    beyond the last event (the next event has not happened).  Before any
+    reversal no rate is known and N stays 0.  Rows before the first event
+    (a series not starting at the shear start) take the first event's N.
+    """
+    if events is None:
+        events = cycle_events(series)
+    t = series["time"]
+    et = [0.0 if (row == 0 and n == 0.0) else float(t[row])
+          for row, n in zip(events["rows"], events["N"])]
+    en = list(events["N"])
+    if not et:
+        return np.zeros_like(t)
+    N = np.interp(t, et, en)
+    if len(et) >= 2 and et[-1] > et[-2]:
+        rate = (en[-1] - en[-2]) / (et[-1] - et[-2])
+        after = t > et[-1]
+        N[after] = en[-1] + np.minimum(rate * (t[after] - et[-1]), 0.25)
+    return N
+
+
+def liquefaction(series, ru_liq=DEFAULT_RU_LIQ):
+    """Initial liquefaction and exits.
+
+    Returns a dict: ``onset`` (first row with r_u >= ru_liq, or None),
+    ``exits`` (rows after the onset with r_u < ru_liq whose previous row has
+    r_u >= ru_liq) and ``entries`` (rows after the onset with r_u >= ru_liq
+    whose previous row has r_u < ru_liq).
+    """
+    ru = series["r_u"]
+    liq = ru >= ru_liq
+    hit = np.nonzero(liq)[0]
+    if not len(hit):
+        return {"onset": None, "exits": [], "entries": []}
+    onset = int(hit[0])
+    below = ru < ru_liq
+    idx = np.arange(onset + 1, len(ru))
+    exits = idx[below[idx] & liq[idx - 1]]
+    entries = idx[liq[idx] & below[idx - 1]]
+    return {"onset": onset, "exits": [int(i) for i in exits],
+            "entries": [int(i) for i in entries]}
+
+
+def find_cycle_states(series, cycle, ru_liq=DEFAULT_RU_LIQ, events=None, liq=None):
+    """Rows of the six states of cycle ``cycle`` (n >= 0); None where not found.
+
+    C0: first row with tau >= 0 after reversal 2n (the start of loading
+    towards +tau_amp; for n = 0 the shear start); C1: reversal 2n+1 (tau
+    reached +tau_amp); C2: first row with tau <= 0 after reversal 2n+1;
+    C3: reversal 2n+2 (tau reached -tau_amp); C0': first liquefaction exit
+    at or after C0 and before C1 (before the end of the series if C1 is not
+    reached); C2': the same between C2 and C3.
+    """
+    if events is None:
+        events = cycle_events(series)
+    if liq is None:
+        liq = liquefaction(series, ru_liq)
+    rr, cr = events["reversal_rows"], events["crossing_rows"]
+
+    def reversal(k):
+        return rr[k - 1] if 1 <= k <= len(rr) else None
+
+    def first_exit(lo, hi):
+        if lo is None:
+            return None
+        for e in liq["exits"]:
+            if e >= lo and (hi is None or e < hi):
+                return e
+            if hi is not None and e >= hi:
+                break
+        return None
+
+    n = int(cycle)
+    st = {"C0": cr.get(2 * n), "C1": reversal(2 * n + 1),
+          "C2": cr.get(2 * n + 1), "C3": reversal(2 * n + 2)}
+    st["C0'"] = first_exit(st["C0"], st["C1"])
+    st["C2'"] = first_exit(st["C2"], st["C3"])
+    return {s: st[s] for s in STATES}
+
+
+def post_liquefaction_cycles(series, ru_liq=DEFAULT_RU_LIQ, events=None, liq=None):
+    """Cycles n whose C0 is at or after the onset of liquefaction, in order."""
+    if events is None:
+        events = cycle_events(series)
+    if liq is None:
+        liq = liquefaction(series, ru_liq)
+    if liq["onset"] is None:
+        return []
+    return [k // 2 for k, row in sorted(events["crossing_rows"].items())
+            if k % 2 == 0 and row is not None and row >= liq["onset"]]
+
+
+def choose_cycle(series, ru_liq=DEFAULT_RU_LIQ, index=None, events=None, liq=None):
+    """Pick cycle C.
+
+    With ``index`` None: the first post-liquefaction cycle with all six
+    states found; otherwise the ``index``-th (0-based) post-liquefaction
+    cycle.  Returns (n, states, note): n and states None when there is no
+    such cycle, note a short reason (or "").
+    """
+    if events is None:
+        events = cycle_events(series)
+    if liq is None:
+        liq = liquefaction(series, ru_liq)
+    if liq["onset"] is None:
+        return None, None, "initial liquefaction not reached"
+    cycles = post_liquefaction_cycles(series, ru_liq, events, liq)
+    if index is not None:
+        if not 0 <= index < len(cycles):
+            return None, None, ("post-liquefaction cycle %d not reached (%d found)"
+                                % (index, len(cycles)))
+        n = cycles[index]
+        return n, find_cycle_states(series, n, ru_liq, events, liq), ""
+    for n in cycles:
+        st = find_cycle_states(series, n, ru_liq, events, liq)
+        if all(v is not None for v in st.values()):
+            return n, st, ""
+    return None, None, "no post-liquefaction cycle with all six states"
+
+
+def cycle_rows(series, n, events=None):
+    """Row range [first, last] of cycle n: from its C0 to the next C0 (or the end)."""
+    if events is None:
+        events = cycle_events(series)
+    first = events["crossing_rows"].get(2 * n)
+    if first is None:
+        return None
+    last = events["crossing_rows"].get(2 * n + 2)
+    return first, (last if last is not None else len(series["time"]) - 1)
+
+
+def connectivity(series, row):
+    """P_c, c = 0..12 (P12: 12 or more), at a row (NaN where a column is absent)."""
+    return np.array([series[c][row] if c in series else np.nan for c in PC_COLUMNS])
+
+
+def peak_ac_per_cycle(series, N):
+    """Maximum a_c in each cycle n (rows with floor(N) == n), n = 0 .. floor(max N)."""
+    cyc = np.floor(N + 1e-12).astype(np.int64)
+    out = []
+    for n in range(int(cyc.max()) + 1 if len(cyc) else 0):
+        sel = (cyc == n) & np.isfinite(series["a_c"])
+        out.append(float(series["a_c"][sel].max()) if sel.any() else None)
+    return out
+
+
+# ---------------------------------------------------------------- summary
+
+# The paper's values (paper/isochoric-cyclic-shearing.md), with the tolerance
+# used to call a measured value a match.  comparison "abs": |measured - paper|
+# <= tolerance; "max": measured <= paper; "each": every element of a list
+# within tolerance.  paper None: the paper gives no number.
+PAPER = {
+    "N_particles": (8000, 0, "abs",
+                    "Sec. 2 / Fig. 1: 'a sample composed of 8000 particles'"),
+    "e_prep": (0.647, 0.01, "abs",
+               "Sec. 2: 'an isotropically compressed sample of 8000 spheres with void "
+               "ratio e = 0.647 (medium dense) under a mean pressure of 100 kPa'"),
+    "p_prep": (100.0e3, 5.0e3, "abs",
+               "Sec. 2: '... under a mean pressure of 100 kPa'; Sec. 3: 'moves "
+               "cyclically leftward from p = 100 kPa'"),
+    "z_g_prep": (4.76, 0.15, "abs",
+                 "Sec. 4: 'z_g decreases from its initial value z_g ~ 4.76'"),
+    "tau_amp": (25.0e3, 0.0, "abs", "Sec. 3: 'with tau^amp = 25 kPa'"),
+    "N_IL": (None, None, None, "Sec. 3 defines N_IL; no value is given"),
+    "z_g_at_IL": (4.0, 0.0, "max",
+                  "Sec. 4: z_g 'drops below 4.0 when the system approaches initial "
+                  "liquefaction'"),
+    "z_g_post_IL_max": (4.0, 0.0, "max",
+                        "Sec. 4: 'In the post-liquefaction period, z_g stays below 4.0'"),
+    "z_g_post_IL_min": (1.5, 0.5, "abs",
+                        "Sec. 4: z_g 'fluctuates significantly down to values as low "
+                        "as 1.5'"),
+    "n_exits": (None, None, None, "no number given"),
+    "z_g_at_exits": (3.6, 0.2, "each",
+                     "Sec. 4: 'z_g = 3.6 ... coinciding with the exit of liquefaction "
+                     "state (C0' and C2')'; Sec. 5: 'exiting the liquefaction state at "
+                     "the coordination number of 3.6'"),
+    "z_g_exit_mean": (3.6, 0.2, "abs", "as z_g_at_exits"),
+    "z_g_exit_std": (None, None, None, "no number given"),
+    "inertial_max": (0.025, 0.0, "max",
+                     "Sec. 2: 'Even in the liquefaction state, I does not increase "
+                     "beyond 0.025'"),
+    "a_c_peak_per_cycle": (None, None, None,
+                           "Sec. 4: the maximum of a_c 'increases gradually with N'; "
+                           "no number given"),
+}
+
+
+def _match(measured, paper, tol, comparison):
+    if isinstance(measured, str):
+        return False
+    if paper is None or measured is None:
+        return None
+    if comparison == "each":
+        return bool(len(measured) > 0 and all(abs(m - paper) <= tol + 1e-12 for m in measured))
+    if comparison == "max":
+        return bool(measured <= paper)
+    return bool(abs(measured - paper) <= tol + 1e-12 * max(1.0, abs(paper)))
+
+
+def _entry(name, description, unit, measured):
+    paper, tol, comparison, source = PAPER[name]
+    return {"name": name, "description": description, "unit": unit,
+            "measured": measured, "paper": paper, "tolerance": tol,
+            "comparison": comparison, "match": _match(measured, paper, tol, comparison),
+            "paper_source": source}
+
+
+def _num(x):
+    """float for JSON, or None for missing/non-finite values."""
+    if x is None:
+        return None
+    x = float(x)
+    return x if math.isfinite(x) else None
+
+
+def summary(series, prep=None, cycle_index=None):
+    """Measured values beside the paper's, plus cycle C, as a JSON-ready dict.
+
+    ``prep`` is the prep.json dict (None if unavailable); ``cycle_index``
+    selects cycle C among the post-liquefaction cycles (default: the first
+    with all six states).  Entries measured as "not reached" (an event that
+    did not happen) or "not available" (missing input) never match.
+    """
+    ru_liq, tau_amp = protocol(prep)
+    events = cycle_events(series)
+    N = cycle_count(series, events)
+    liq = liquefaction(series, ru_liq)
+    zg = series["z_g"]
+    prep = prep or {}
+
+    def prep_value(key):
+        v = prep.get(key)
+        return float(v) if _is_number(v) else NOT_AVAILABLE
+
+    entries = [
+        _entry("N_particles", "particles in the sample (prep.json N)", "-",
+               prep_value("N")),
+        _entry("e_prep", "void ratio at the end of preparation", "-", prep_value("e")),
+        _entry("p_prep", "mean stress at the end of preparation", "Pa", prep_value("p")),
+        _entry("z_g_prep", "z_g at the end of preparation", "-", prep_value("z_g")),
+        _entry("tau_amp", "shear stress amplitude used", "Pa", prep_value("tau_amp")),
+    ]
+    onset = liq["onset"]
+    if onset is None:
+        entries += [
+            _entry("N_IL", "cycles to initial liquefaction (r_u >= ru_liq)", "-", NOT_REACHED),
+            _entry("z_g_at_IL", "z_g at initial liquefaction", "-", NOT_REACHED),
+            _entry("z_g_post_IL_max", "largest z_g after initial liquefaction", "-",
+                   NOT_REACHED),
+            _entry("z_g_post_IL_min", "smallest z_g after initial liquefaction", "-",
+                   NOT_REACHED),
+        ]
+    else:
+        post = zg[onset:][np.isfinite(zg[onset:])]
+        entries += [
+            _entry("N_IL", "cycles to initial liquefaction (r_u >= ru_liq)", "-",
+                   float(N[onset])),
+            _entry("z_g_at_IL", "z_g at initial liquefaction", "-", _num(zg[onset])),
+            _entry("z_g_post_IL_max", "largest z_g after initial liquefaction", "-",
+                   float(post.max()) if len(post) else NOT_REACHED),
+            _entry("z_g_post_IL_min", "smallest z_g after initial liquefaction", "-",
+                   float(post.min()) if len(post) else NOT_REACHED),
+        ]
+    ex = liq["exits"]
+    zex = [float(zg[i]) for i in ex]
+    entries += [
+        _entry("n_exits", "number of liquefaction exits (r_u falls below ru_liq)", "-",
+               len(ex) if ex else NOT_REACHED),
+        _entry("z_g_at_exits", "z_g at each liquefaction exit", "-",
+               zex if ex else NOT_REACHED),
+        _entry("z_g_exit_mean", "mean z_g at the liquefaction exits", "-",
+               float(np.mean(zex)) if ex else NOT_REACHED),
+        _entry("z_g_exit_std", "standard deviation (population) of z_g at the exits",
+               "-", float(np.std(zex)) if ex else NOT_REACHED),
+    ]
+    if "inertial" in series:
+        inert = series["inertial"]
+        meas = float(np.max(inert)) if np.all(np.isfinite(inert)) else "infinite"
+    else:
+        meas = NOT_AVAILABLE
+    entries.append(_entry("inertial_max", "largest inertial number I", "-", meas))
+    entries.append(_entry("a_c_peak_per_cycle",
+                          "maximum a_c in each cycle n <= N < n+1 (last may be partial)",
+                          "-", peak_ac_per_cycle(series, N)))
+
+    n, states, note = choose_cycle(series, ru_liq, cycle_index, events, liq)
+    cyc = {"cycle": n, "index_among_post_IL": cycle_index, "note": note, "states": {}}
+    if n is not None:
+        for s in STATES:
+            r = states[s]
+            if r is None:
+                cyc["states"][s] = NOT_REACHED
+                continue
+            cyc["states"][s] = {
+                "row": int(r), "step": int(series["step"][r]), "N": float(N[r]),
+                "tau": _num(series["tau"][r]), "p": _num(series["p"][r]),
+                "r_u": _num(series["r_u"][r]), "gamma": _num(series["gamma"][r]),
+                "z_g": _num(zg[r]), "a_c": _num(series["a_c"][r]),
+                "P_c": [_num(v) for v in connectivity(series, r)]}
+    return {
+        "ru_liq": ru_liq, "tau_amp": tau_amp,
+        "rows": int(len(N)), "last_step": int(series["step"][-1]),
+        "N_end": float(N[-1]), "reversals": int(np.max(series["reversals"])),
+        "onset_row": onset,
+        "exit_N": [float(N[i]) for i in ex],
+        "entries": entries, "cycle_C": cyc,
+    }
+
+
+def _fmt(v, unit=""):
+    if isinstance(v, str):
+        return v
+    if v is None:
+        return "-"
+    if isinstance(v, list):
+        if not v:
+            return "[]"
+        shown = ", ".join(_fmt(x, unit) for x in v[:8])
+        return "[" + shown + (", ... (%d)" % len(v) if len(v) > 8 else "") + "]"
+    if isinstance(v, bool):
+        return "yes" if v else "no"
+    if unit == "Pa":
+        return "%.4g kPa" % (v / 1e3)
+    if isinstance(v, int):
+        return str(v)
+    return "%.4g" % v
+
+
+def summary_markdown(s):
+    """The summary as a markdown table (stresses in kPa)."""
+    lines = ["| quantity | measured | paper | tolerance | match |",
+             "| --- | --- | --- | --- | --- |"]
+    for e in s["entries"]:
+        u = e["unit"]
+        tol = "-" if e["tolerance"] is None else (
+            "measured <= paper" if e["comparison"] == "max" else
+            ("each within %s" if e["comparison"] == "each" else "+-%s")
+            % _fmt(e["tolerance"], u))
+        match = {True: "yes", False: "no", None: "-"}[e["match"]]
+        lines.append("| %s (%s) | %s | %s | %s | %s |" % (
+            e["name"], e["description"], _fmt(e["measured"], u), _fmt(e["paper"], u),
+            tol, match))
+    c = s["cycle_C"]
+    lines.append("")
+    if c["cycle"] is None:
+        lines.append("Cycle C: %s." % c["note"])
+    else:
+        lines.append("Cycle C: cycle %d (N = %d to %d)." % (c["cycle"], c["cycle"],
+                                                           c["cycle"] + 1))
+        lines.append("")
+        lines.append("| state | step | N | tau | p | r_u | gamma | z_g | a_c |")
+        lines.append("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+        for st, d in c["states"].items():
+            if isinstance(d, str):
+                lines.append("| %s | %s |  |  |  |  |  |  |  |" % (st, d))
+            else:
+                gam = None if d["gamma"] is None else 100 * d["gamma"]
+                lines.append("| %s | %d | %.4g | %s | %s | %s | %s%% | %s | %s |" % (
+                    st, d["step"], d["N"], _fmt(d["tau"], "Pa"), _fmt(d["p"], "Pa"),
+                    _fmt(d["r_u"]), _fmt(gam), _fmt(d["z_g"]), _fmt(d["a_c"])))
+    lines.append("")
+    lines.append("ru_liq = %g, tau_amp = %g kPa, %d rows, last step %d, N_end = %.4g."
+                 % (s["ru_liq"], s["tau_amp"] / 1e3, s["rows"], s["last_step"], s["N_end"]))
+    return "\n".join(lines) + "\n"

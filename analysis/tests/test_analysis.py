@@ -1,0 +1,470 @@
+# GRFLOW analysis tests: synthetic run directories with known events.
+# Part of GRFLOW, distributed under the GNU General Public License v2
+# (see LICENSE at the top of the repository).
+"""Tests of analysis/grflow_analysis.py and analysis/make_figures.py.
+
+A synthetic run directory is written in the format of inputs/README.md.
+Its fractional cycle count N is built exactly (fractions) quarter by
+quarter, with a different number of rows per quarter, tau = tau_amp sin(2 pi N)
+(exactly 0 at the zero-crossings, exactly +-tau_amp at the reversals) and r_u
+chosen so that initial liquefaction is at N = 4.4 and the system is liquefied
+for N mod 1/2 in [0.4, 0.5) u [0, 0.1) afterwards, except that in cycle 5 it
+stays liquefied from N = 5.4 to 5.8 (so cycle 5 has no C2' before its C3).
+The run ends at N = 7.3.  The expected values below follow from that design,
+not from the library.
+"""
+
+import json
+import math
+import os
+import subprocess
+import sys
+from fractions import Fraction as F
+
+import numpy as np
+import pytest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ANALYSIS = os.path.dirname(HERE)
+sys.path.insert(0, ANALYSIS)
+import grflow_analysis as ga  # noqa: E402
+import make_figures  # noqa: E402
+
+TAU_AMP = 25.0e3
+P0 = 1.0e5
+DT_ROW = 1.0e-3          # simulated time between rows (s)
+N_IL = F(22, 5)          # 4.4
+EXITS = [F(23, 5), F(51, 10), F(29, 5), F(61, 10), F(33, 5), F(71, 10)]
+EXIT_ZG = [3.5, 3.7, 3.62, 3.58, 3.66, 3.54]
+ENTRIES = [F(49, 10), F(27, 5), F(59, 10), F(32, 5), F(69, 10)]
+ZG_MIN_N, ZG_MIN = F(6), 1.7
+FIGURES = ("fig1_snapshots.png", "fig2_macro.png", "fig3_zg.png", "fig4_pc.png",
+           "fig5_ac_zg.png")
+
+
+def rows_per_quarter(q):
+    return 10 if q < 18 else (20 if q % 4 in (0, 1) else 15)
+
+
+def build_series(liquefy=True, quarters=29, last_fraction=F(1, 5)):
+    """Columns of a synthetic series and the exact N of each row (list of Fractions)."""
+    Ns, qs, js = [], [], []
+    for q in range(quarters + 1):
+        Q = rows_per_quarter(q)
+        jmax = Q - 1 if q < quarters else int(last_fraction * Q)
+        for j in range(jmax + 1):
+            Ns.append(F(q, 4) + F(j, 4 * Q))
+            qs.append(q)
+            js.append(j)
+    n = len(Ns)
+    Nf = np.array([float(x) for x in Ns])
+    end = Ns[-1]
+    col = {c: np.zeros(n) for c in ga.SERIES_COLUMNS}
+    col["step"] = 100.0 * np.arange(n)
+    col["time"] = DT_ROW * np.arange(n)
+    gamma = 0.0
+    for i, (N, q, j) in enumerate(zip(Ns, qs, js)):
+        rev = (q + 1) // 2
+        if j == 0 and q % 2 == 0:
+            tau = 0.0
+        elif j == 0:
+            tau = TAU_AMP if q % 4 == 1 else -TAU_AMP
+        else:
+            tau = TAU_AMP * math.sin(2 * math.pi * float(N))
+        half = N - F(math.floor(2 * N), 2)                 # N mod 1/2
+        if not liquefy:
+            ru = 0.5 * float(N / end)
+            liq = False
+        elif N < N_IL:
+            ru, liq = 0.95 * float(N / N_IL), False
+        else:
+            liq = half >= F(2, 5) or half < F(1, 10) or F(27, 5) <= N < F(29, 5)
+            ru = 0.995 if liq else 0.95
+        if not liquefy or N < N_IL:
+            zg = 4.76 - 0.6 * float(N) / 4.4
+        elif N in EXITS:
+            zg = EXIT_ZG[EXITS.index(N)]
+        elif N == ZG_MIN_N:
+            zg = ZG_MIN
+        else:
+            zg = 2.8 if liq else 3.9
+        cyc = math.floor(N)
+        ac = (0.1 + 0.05 * cyc) * (abs(tau) / TAU_AMP if j == 0 else
+                                   abs(math.sin(2 * math.pi * float(N))))
+        direction = 1.0 if rev % 2 == 0 else -1.0
+        gamma += direction * (2e-5 if liq else 1e-5) if i else 0.0
+        pc = np.zeros(13)
+        pc[i % 13] += 0.5
+        pc[(i + 5) % 13] += 0.5
+        p = P0 * (1.0 - ru)
+        vals = dict(reversals=rev, direction=direction, x_w=gamma * 0.02, gamma=gamma,
+                    tau=tau, p=p, r_u=ru, z_g=zg, a_c=ac, N_p=6400.0,
+                    floaters=round(pc[0] * 6400), sxx=p, syy=p, szz=p, sxz=-tau,
+                    zlo=0.0, zhi=0.02, inertial=1e-4 / math.sqrt(max(1 - ru, 1e-6)))
+        vals["N_c"] = zg * (6400 - vals["floaters"]) / 2
+        for k, v in vals.items():
+            col[k][i] = v
+        for c in range(13):
+            col["P%d" % c][i] = pc[c]
+    return col, Ns, Nf
+
+
+def write_series(path, col, names=ga.SERIES_COLUMNS):
+    with open(path, "w") as f:
+        f.write("# GRFLOW shear series (synthetic)\n")
+        f.write("# " + " ".join(names) + "\n")
+        for i in range(len(col["step"])):
+            f.write(" ".join("%.17g" % col[c][i] for c in names) + "\n")
+
+
+def write_atoms(path, step, ids, radius, xyz, glue, box, glue_name="glue"):
+    with open(path, "w") as f:
+        f.write("ITEM: TIMESTEP\n%d\nITEM: NUMBER OF ATOMS\n%d\n" % (step, len(ids)))
+        f.write("ITEM: BOX BOUNDS pp pp ff\n")
+        for lo, hi in box:
+            f.write("%.17g %.17g\n" % (lo, hi))
+        f.write("ITEM: ATOMS id type radius x y z vx vy vz %s\n" % glue_name)
+        for i in range(len(ids)):
+            f.write("%d 1 %.17g %.17g %.17g %.17g 0 0 0 %d\n"
+                    % (ids[i], radius[i], *xyz[i], glue[i]))
+
+
+def write_contacts(path, step, pairs, box):
+    with open(path, "w") as f:
+        f.write("ITEM: TIMESTEP\n%d\nITEM: NUMBER OF ENTRIES\n%d\n" % (step, len(pairs)))
+        f.write("ITEM: BOX BOUNDS pp pp ff\n")
+        for lo, hi in box:
+            f.write("%.17g %.17g\n" % (lo, hi))
+        f.write("ITEM: ENTRIES id1 id2 dx dy dz fn ftx fty ftz\n")
+        for a, b, fn in pairs:
+            f.write("%d %d 1e-3 0 0 %.17g 0 0 0\n" % (a, b, fn))
+
+
+BOX = [(0.0, 0.008), (0.0, 0.008), (0.0, 0.02)]
+
+
+def make_run(root, liquefy=True, snapshots=True, prep=True, **kw):
+    """Write a synthetic run directory; return (dir, columns, exact N, float N)."""
+    os.makedirs(root, exist_ok=True)
+    col, Ns, Nf = build_series(liquefy, **kw)
+    write_series(os.path.join(root, "series.txt"), col)
+    if prep:
+        with open(os.path.join(root, "prep.json"), "w") as f:
+            json.dump({"N": 8000, "seed": 1, "d_min": 1e-3, "d_max": 2e-3,
+                       "d_mean": 1.26e-3, "density": 2650.0, "mu_prep": 0.1,
+                       "mu_t": 0.5, "p_target": 1e5, "e": 0.650, "z_g": 4.80,
+                       "p": 1.0e5, "sxx": 1e5, "syy": 1e5, "szz": 1e5, "Lx": 0.008,
+                       "Ly": 0.008, "h": 0.02, "step": 50000, "time": 0.5,
+                       "dt": 1e-5, "tau_amp": TAU_AMP, "v_x": 0.01, "ru_liq": 0.99}, f)
+    if snapshots:
+        snap = os.path.join(root, "snapshots")
+        os.makedirs(snap, exist_ok=True)
+        rng = np.random.default_rng(3)
+        n = 300
+        xyz = rng.uniform([0, 0, 0.0005], [0.008, 0.008, 0.0195], size=(n, 3))
+        rad = rng.uniform(0.0005, 0.001, n)
+        glue = np.where(xyz[:, 2] < 0.0015, 1, np.where(xyz[:, 2] > 0.0185, 2, 0))
+        ids = np.arange(1, n + 1)
+        write_atoms(os.path.join(snap, "atoms.prep.txt"), 0, ids, rad, xyz, glue, BOX)
+        for step in (int(col["step"][50]), int(col["step"][-1])):
+            moved = xyz.copy()
+            moved[:, 0] = (moved[:, 0] + 0.2 * moved[:, 2]) % 0.008
+            write_atoms(os.path.join(snap, "atoms.%d.txt" % step), step, ids, rad, moved,
+                        glue, BOX, glue_name="v_glue")     # as the decks write it
+            write_contacts(os.path.join(snap, "contacts.%d.txt" % step), step,
+                           [(1, 2, 0.5), (2, 3, 1.5), (1, 3, 2.5)], BOX)
+    return root, col, Ns, Nf
+
+
+def row_at(Ns, value):
+    return Ns.index(value)
+
+
+@pytest.fixture(scope="module")
+def liquefied_run(tmp_path_factory):
+    return make_run(str(tmp_path_factory.mktemp("liq") / "run"))
+
+
+@pytest.fixture(scope="module")
+def dry_run(tmp_path_factory):
+    return make_run(str(tmp_path_factory.mktemp("dry") / "run"), liquefy=False,
+                    quarters=13, last_fraction=F(1, 2))
+
+
+# ------------------------------------------------------------ reading
+
+def test_read_series_columns(liquefied_run):
+    root, col, Ns, _ = liquefied_run
+    s = ga.read_series(os.path.join(root, "series.txt"))
+    assert list(s) == list(ga.SERIES_COLUMNS)
+    assert len(s["step"]) == len(Ns)
+    for c in ga.SERIES_COLUMNS:
+        np.testing.assert_array_equal(s[c], col[c])
+
+
+def test_read_series_without_header_and_with_repeated_steps(tmp_path):
+    col, Ns, _ = build_series(quarters=3, last_fraction=F(0))
+    path = str(tmp_path / "series.txt")
+    with open(path, "w") as f:             # no header line: documented order assumed
+        for i in range(len(Ns)):
+            f.write(" ".join("%.17g" % col[c][i] for c in ga.SERIES_COLUMNS) + "\n")
+        # a resumed run that repeated rows 20.. (the later rows win)
+        for i in range(20, len(Ns)):
+            f.write(" ".join("%.17g" % (col[c][i] + (0.5 if c == "tau" else 0))
+                             for c in ga.SERIES_COLUMNS) + "\n")
+    with pytest.warns(UserWarning):
+        s = ga.read_series(path)
+    assert len(s["step"]) == len(Ns)
+    np.testing.assert_array_equal(s["tau"][:20], col["tau"][:20])
+    np.testing.assert_array_equal(s["tau"][20:], col["tau"][20:] + 0.5)
+
+
+def test_read_dumps(liquefied_run):
+    root, col, _, _ = liquefied_run
+    a = ga.read_dump_atoms(os.path.join(root, "snapshots", "atoms.prep.txt"))
+    assert a["step"] == 0 and len(a["columns"]["id"]) == 300
+    np.testing.assert_array_equal(a["box"], np.array(BOX))
+    assert set(np.unique(a["columns"]["glue"])) == {0, 1, 2}
+    step = int(col["step"][-1])
+    c = ga.read_dump_local(os.path.join(root, "snapshots", "contacts.%d.txt" % step))
+    assert c["step"] == step
+    np.testing.assert_array_equal(c["columns"]["id1"], [1, 2, 1])
+    np.testing.assert_array_equal(c["columns"]["fn"], [0.5, 1.5, 2.5])
+    v = ga.read_dump_atoms(os.path.join(root, "snapshots", "atoms.%d.txt" % step))
+    np.testing.assert_array_equal(v["columns"]["glue"], a["columns"]["glue"])
+    np.testing.assert_array_equal(v["columns"]["v_glue"], a["columns"]["glue"])
+    snaps = ga.list_snapshots(root)
+    assert [s for s, _ in snaps] == [int(col["step"][50]), step]
+    with pytest.raises(ga.FormatError):
+        ga.read_dump_atoms(os.path.join(root, "snapshots", "contacts.%d.txt" % step))
+
+
+# ------------------------------------------------------------ cycles
+
+def test_cycle_count_matches_construction(liquefied_run):
+    root, col, Ns, Nf = liquefied_run
+    s = ga.read_series(os.path.join(root, "series.txt"))
+    N = ga.cycle_count(s)
+    # exact up to round-off everywhere, including the extrapolated last rows
+    np.testing.assert_allclose(N, Nf, rtol=0, atol=1e-12)
+    ev = ga.cycle_events(s)
+    assert len(ev["reversal_rows"]) == 15
+    for k, r in enumerate(ev["reversal_rows"], 1):
+        assert Ns[r] == F(k, 2) - F(1, 4)
+    for k in range(1, 15):
+        assert Ns[ev["crossing_rows"][k]] == F(k, 2)
+    assert ev["crossing_rows"][15] is None     # the run stops before it
+
+
+def test_cycle_count_between_samples():
+    """Crossings between samples: the first row with the new sign carries N = k/2."""
+    tau = np.array([0, 10, 20, 25, 12, -3, -20, -25, -5, 4, 15, 20, 24]) * 1e3
+    rev = np.array([0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 2, 2])
+    s = {"time": np.arange(13.0), "reversals": rev, "tau": tau}
+    N = ga.cycle_count(s)
+    expect = [0, 1 / 12, 2 / 12, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875, 1.0,
+              1.125, 1.25, 1.25]               # extrapolated, then capped at +1/4
+    np.testing.assert_allclose(N, expect, atol=1e-12)
+    assert ga.cycle_count({"time": np.arange(3.0), "reversals": np.zeros(3),
+                           "tau": np.array([0, 1.0, 2.0])}).tolist() == [0, 0, 0]
+
+
+def test_liquefaction_onset_and_exits(liquefied_run):
+    root, col, Ns, Nf = liquefied_run
+    s = ga.read_series(os.path.join(root, "series.txt"))
+    liq = ga.liquefaction(s, 0.99)
+    assert liq["onset"] == row_at(Ns, N_IL)
+    assert [Ns[i] for i in liq["exits"]] == EXITS
+    assert [Ns[i] for i in liq["entries"]] == ENTRIES
+
+
+def test_cycle_states(liquefied_run):
+    root, col, Ns, Nf = liquefied_run
+    s = ga.read_series(os.path.join(root, "series.txt"))
+    assert ga.post_liquefaction_cycles(s, 0.99) == [5, 6, 7]
+    offsets = {"C0": F(0), "C0'": F(1, 10), "C1": F(1, 4), "C2": F(1, 2),
+               "C2'": F(3, 5), "C3": F(3, 4)}
+    n, st, note = ga.choose_cycle(s, 0.99)       # cycle 5 lacks C2': cycle 6
+    assert n == 6 and note == ""
+    assert st == {k: row_at(Ns, 6 + v) for k, v in offsets.items()}
+    n, st, _ = ga.choose_cycle(s, 0.99, index=0)
+    assert n == 5
+    assert st["C2'"] is None
+    assert {k: Ns[v] for k, v in st.items() if v is not None} == {
+        k: 5 + v for k, v in offsets.items() if k != "C2'"}
+    n, st, _ = ga.choose_cycle(s, 0.99, index=2)
+    assert n == 7
+    assert [Ns[st[k]] if st[k] is not None else None for k in ga.STATES] == [
+        F(7), F(71, 10), F(29, 4), None, None, None]
+    assert ga.choose_cycle(s, 0.99, index=3)[0] is None
+    r = st["C1"]
+    np.testing.assert_array_equal(ga.connectivity(s, r), [col["P%d" % c][r] for c in range(13)])
+    assert ga.cycle_rows(s, 6) == (row_at(Ns, F(6)), row_at(Ns, F(7)))
+
+
+def test_states_edge_rows():
+    """Threshold reached exactly; exits on the C0 row (counts) and on the C1 row (does not)."""
+    tau = np.array([0, 10, 20, 25, 10, -2, -20, -25, -10, 0, 10, 20, 25, 5, -1, -10,
+                    -20, -25, -5, 3]) * 1e3
+    rev = np.array([0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 2, 3, 3, 3, 3, 3, 4, 4, 4])
+    ru = np.array([.5] * 6 + [.99, .98, .995, .98, .98, .995, .98, .995, .995, .995,
+                              .98, .98, .98, .98])
+    s = {"time": np.arange(20.0), "reversals": rev, "tau": tau, "r_u": ru}
+    liq = ga.liquefaction(s, 0.99)
+    assert liq["onset"] == 6 and liq["exits"] == [7, 9, 12, 16]
+    assert ga.find_cycle_states(s, 1, 0.99) == {"C0": 9, "C0'": 9, "C1": 12, "C2": 14,
+                                                "C2'": 16, "C3": 17}
+    assert ga.find_cycle_states(s, 0, 0.99) == {"C0": 0, "C0'": None, "C1": 3, "C2": 5,
+                                                "C2'": None, "C3": 7}
+    assert ga.post_liquefaction_cycles(s, 0.99) == [1, 2]
+    assert ga.choose_cycle(s, 0.99)[:2] == (1, ga.find_cycle_states(s, 1, 0.99))
+    np.testing.assert_allclose(ga.cycle_count(s)[[3, 5, 7, 9, 12, 14, 17, 19]],
+                               [.25, .5, .75, 1, 1.25, 1.5, 1.75, 2], atol=1e-12)
+
+
+def test_match_rules():
+    assert ga._match(4.2, 4.0, 0.0, "max") is False
+    assert ga._match(3.9, 4.0, 0.0, "max") is True
+    assert ga._match(0.66, 0.647, 0.01, "abs") is False
+    assert ga._match(0.655, 0.647, 0.01, "abs") is True
+    assert ga._match([3.5, 3.9], 3.6, 0.2, "each") is False
+    assert ga._match([3.5, 3.7], 3.6, 0.2, "each") is True
+    assert ga._match("not reached", None, None, None) is False
+    assert ga._match(2.0, None, None, None) is None
+
+
+def test_peak_ac_per_cycle(liquefied_run):
+    root, _, _, Nf = liquefied_run
+    s = ga.read_series(os.path.join(root, "series.txt"))
+    peaks = ga.peak_ac_per_cycle(s, ga.cycle_count(s))
+    np.testing.assert_allclose(peaks, [0.1 + 0.05 * n for n in range(8)], atol=1e-12)
+
+
+# ------------------------------------------------------------ summary
+
+def entries(summ):
+    return {e["name"]: e for e in summ["entries"]}
+
+
+def test_summary_liquefied(liquefied_run):
+    root, col, Ns, Nf = liquefied_run
+    s = ga.read_series(os.path.join(root, "series.txt"))
+    summ = ga.summary(s, ga.read_prep(os.path.join(root, "prep.json")))
+    e = entries(summ)
+    assert e["e_prep"]["measured"] == 0.650 and e["e_prep"]["paper"] == 0.647
+    assert e["e_prep"]["match"] is True
+    assert e["z_g_prep"]["measured"] == 4.80 and e["z_g_prep"]["match"] is True
+    assert e["N_IL"]["measured"] == pytest.approx(4.4, abs=1e-12)
+    assert e["N_IL"]["paper"] is None and e["N_IL"]["match"] is None
+    assert e["z_g_post_IL_min"]["measured"] == ZG_MIN and e["z_g_post_IL_min"]["match"]
+    assert e["z_g_post_IL_max"]["measured"] == 3.9 and e["z_g_post_IL_max"]["match"]
+    assert e["z_g_at_exits"]["measured"] == EXIT_ZG and e["z_g_at_exits"]["match"]
+    assert e["z_g_exit_mean"]["measured"] == pytest.approx(3.6, abs=1e-12)
+    assert e["z_g_exit_std"]["measured"] == pytest.approx(np.std(EXIT_ZG), abs=1e-12)
+    assert e["n_exits"]["measured"] == 6
+    assert summ["exit_N"] == pytest.approx([float(x) for x in EXITS], abs=1e-12)
+    assert summ["cycle_C"]["cycle"] == 6
+    assert summ["cycle_C"]["states"]["C2'"]["N"] == pytest.approx(6.6, abs=1e-12)
+    assert summ["cycle_C"]["states"]["C2'"]["z_g"] == EXIT_ZG[4]
+
+
+def test_summary_never_liquefied(dry_run):
+    root, _, _, _ = dry_run
+    s = ga.read_series(os.path.join(root, "series.txt"))
+    summ = ga.summary(s, ga.read_prep(os.path.join(root, "prep.json")))
+    e = entries(summ)
+    for name in ("N_IL", "z_g_at_IL", "z_g_post_IL_min", "z_g_post_IL_max", "n_exits",
+                 "z_g_at_exits", "z_g_exit_mean", "z_g_exit_std"):
+        assert e[name]["measured"] == "not reached", name
+        assert e[name]["match"] is False, name
+    assert e["e_prep"]["match"] is True
+    assert summ["cycle_C"]["cycle"] is None
+    # without prep.json the preparation values are not available, never a match
+    summ = ga.summary(s, None)
+    assert entries(summ)["e_prep"]["measured"] == "not available"
+    assert entries(summ)["e_prep"]["match"] is False
+    assert summ["tau_amp"] == 25e3 and summ["ru_liq"] == 0.99
+
+
+# ------------------------------------------------------------ command
+
+def test_command_liquefied(liquefied_run, tmp_path, capsys):
+    root = liquefied_run[0]
+    out = str(tmp_path / "figs")
+    assert make_figures.main([root, "--out", out]) == 0
+    for name in FIGURES + ("summary.json", "summary.md"):
+        assert os.path.getsize(os.path.join(out, name)) > 1000 or name.startswith("summary")
+    with open(os.path.join(out, "summary.json")) as f:
+        summ = json.load(f)
+    assert summ["cycle_C"]["cycle"] == 6
+    printed = capsys.readouterr().out
+    assert "| N_IL" in printed and "z_g_exit_mean" in printed
+    md = open(os.path.join(out, "summary.md")).read()
+    assert "| e_prep" in md and "0.647" in md
+    # --cycle picks another post-liquefaction cycle, incomplete ones included
+    out2 = str(tmp_path / "figs2")
+    assert make_figures.main([root, "--out", out2, "--cycle", "2"]) == 0
+    with open(os.path.join(out2, "summary.json")) as f:
+        summ = json.load(f)
+    assert summ["cycle_C"]["cycle"] == 7
+    assert summ["cycle_C"]["states"]["C3"] == "not reached"
+    assert os.path.isfile(os.path.join(out2, "fig4_pc.png"))
+
+
+def test_command_never_liquefied_default_out(dry_run, capsys):
+    root = dry_run[0]
+    assert make_figures.main([root]) == 0
+    out = os.path.join(root, "figures")
+    for name in FIGURES + ("summary.json", "summary.md"):
+        assert os.path.isfile(os.path.join(out, name)), name
+    with open(os.path.join(out, "summary.json")) as f:
+        e = entries(json.load(f))
+    assert e["N_IL"]["measured"] == "not reached" and e["N_IL"]["match"] is False
+    assert "not reached" in capsys.readouterr().out
+
+
+def test_command_without_snapshots_or_prep(tmp_path, capsys):
+    root = make_run(str(tmp_path / "run"), snapshots=False, prep=False,
+                    quarters=21, last_fraction=F(0))[0]
+    assert make_figures.main([root]) == 0
+    out = os.path.join(root, "figures")
+    assert not os.path.exists(os.path.join(out, "fig1_snapshots.png"))
+    for name in FIGURES[1:]:
+        assert os.path.isfile(os.path.join(out, name)), name
+    printed = capsys.readouterr().out
+    assert "fig1 skipped" in printed and "prep.json unusable" in printed
+
+
+def _series_lines():
+    col, Ns, _ = build_series(quarters=2, last_fraction=F(0))
+    head = "# " + " ".join(ga.SERIES_COLUMNS)
+    rows = [" ".join("%.17g" % col[c][i] for c in ga.SERIES_COLUMNS) for i in range(len(Ns))]
+    return head, rows
+
+
+@pytest.mark.parametrize("case", ["ragged", "text", "no_tau", "header_only", "no_series",
+                                  "no_dir"])
+def test_malformed_input_exit_2(tmp_path, capsys, case):
+    root = tmp_path / "run"
+    head, rows = _series_lines()
+    if case != "no_dir":
+        root.mkdir()
+    if case == "ragged":
+        rows[7] = rows[7].rsplit(" ", 1)[0]
+    elif case == "text":
+        rows[3] = rows[3].replace(rows[3].split()[6], "abc", 1)
+    elif case == "no_tau":
+        head = head.replace(" tau ", " shear ")
+    elif case == "header_only":
+        rows = []
+    if case not in ("no_series", "no_dir"):
+        (root / "series.txt").write_text(head + "\n" + "\n".join(rows) + "\n")
+    assert make_figures.main([str(root)]) == 2
+    assert "error" in capsys.readouterr().err
+
+
+def test_cli_subprocess_exit_codes(tmp_path):
+    script = os.path.join(ANALYSIS, "make_figures.py")
+    bad = subprocess.run([sys.executable, script, str(tmp_path / "absent")],
+                         capture_output=True, text=True)
+    assert bad.returncode == 2 and "does not exist" in bad.stderr

@@ -1,0 +1,201 @@
+"""The protocol decks (inputs/cyclic_shear.lmp) end to end, on a small case.
+
+1. The whole protocol with the quick preset and fewer particles: it
+   prepares the sample (compression, friction, glue), shears it through
+   initial liquefaction (r_u >= 0.99) and one post-liquefaction cycle, and
+   every output file parses in the format of inputs/README.md.
+2. Kill and resume: a shear stage killed (SIGKILL) after its first
+   restart file, then resumed with -var resume yes, leaves one series with
+   every output step exactly once, identical to an uninterrupted run up to
+   the restart step.
+3. Bad deck parameters stop with a clear message.
+
+Environment: LMP (lmp binary), GRFLOW_INPUTS (the inputs/ directory).
+"""
+
+import json
+import os
+import signal
+import subprocess
+import time
+
+import pytest
+
+from lmprun import LMP
+
+INPUTS = os.environ.get("GRFLOW_INPUTS",
+                        os.path.join(os.path.dirname(__file__), "..", "..", "inputs"))
+DECK = os.path.join(INPUTS, "cyclic_shear.lmp")
+COLUMNS = ("step time reversals direction x_w gamma tau p r_u z_g a_c N_c N_p floaters "
+           "sxx syy szz sxy sxz syz zlo zhi inertial " +
+           " ".join(f"P{c}" for c in range(13))).split()
+SMALL = {"preset": "quick", "N": "500", "n_post": "1", "series_every": "50"}
+
+
+def lmp_cmd(outdir, screen=False, **var):
+    cmd = [LMP, "-nocite", "-echo", "none", "-log", "none", "-in", DECK,
+           "-var", "inputs", INPUTS, "-var", "outdir", str(outdir)]
+    for k, v in var.items():
+        cmd += ["-var", k, str(v)]
+    if not screen:
+        cmd += ["-screen", "none"]
+    return cmd
+
+
+def run(outdir, timeout=900, **var):
+    proc = subprocess.run(lmp_cmd(outdir, **var), capture_output=True, text=True,
+                          timeout=timeout)
+    assert proc.returncode == 0, (proc.stdout[-3000:] + proc.stderr[-3000:]
+                                  + tail(outdir / "log.shear.lammps")
+                                  + tail(outdir / "log.prep.lammps"))
+    return proc
+
+
+def tail(path, n=3000):
+    return path.read_text(errors="replace")[-n:] if path.exists() else ""
+
+
+def read_series(path):
+    header, rows = None, []
+    for line in path.read_text().splitlines():
+        if line.startswith("#"):
+            if line.startswith("# step"):
+                header = line[1:].split()
+            continue
+        values = [float(v) for v in line.split()]
+        assert len(values) == len(COLUMNS), line
+        rows.append(values)
+    assert header == COLUMNS
+    return rows
+
+
+def read_dump(path, kind):
+    lines = path.read_text().splitlines()
+    item = next(i for i, l in enumerate(lines) if l.startswith(f"ITEM: {kind}"))
+    cols = lines[item].split()[2:]
+    n = int(lines[lines.index(f"ITEM: NUMBER OF {kind}") + 1])
+    data = [[float(v) for v in l.split()] for l in lines[item + 1:item + 1 + n]]
+    assert all(len(r) == len(cols) for r in data)
+    return cols, data
+
+
+@pytest.fixture(scope="module")
+def protocol(tmp_path_factory):
+    out = tmp_path_factory.mktemp("protocol") / "run"
+    t0 = time.time()
+    run(out, **SMALL)
+    return out, time.time() - t0
+
+
+def test_whole_protocol_reaches_liquefaction(protocol):
+    out, seconds = protocol
+    prep = json.loads((out / "prep.json").read_text())
+    for key in ("N", "seed", "d_min", "d_max", "d_mean", "density", "mu_prep", "mu_t",
+                "pair_stock", "p_target", "e", "z_g", "p", "sxx", "syy", "szz", "Lx", "Ly",
+                "h", "step", "time", "dt", "tau_amp", "v_x", "ru_liq"):
+        assert key in prep, key
+    assert prep["N"] == 500
+    # the whole-cell stresses were within 1% of 100 kPa; the central slab is near
+    assert abs(prep["p"] - 1.0e5) < 0.15e5
+    assert 0.5 < prep["e"] < 1.0
+    # timestep rule: dt = 0.1 sqrt(m_min / kn)
+    m_min = 2650 * 3.141592653589793 / 6 * 1.0e-9
+    assert prep["dt"] == pytest.approx(0.1 * (m_min / 1.0e6) ** 0.5, rel=1e-9)
+
+    rows = read_series(out / "series.txt")
+    col = {name: [r[k] for r in rows] for k, name in enumerate(COLUMNS)}
+    steps = col["step"]
+    assert steps == sorted(set(steps))
+    assert all(b - a == 50 for a, b in zip(steps, steps[1:]))
+    ru_max = max(col["r_u"])
+    reversals = col["reversals"][-1]
+    log = (out / "log.shear.lammps").read_text()
+    il = [l for l in log.splitlines() if l.startswith("GRFLOW shear: done")]
+    print(f"[ measured ] small protocol: {seconds:.0f} s, e = {prep['e']:.4f}, "
+          f"z_g = {prep['z_g']:.3f}, max r_u = {ru_max:.4f}, reversals = {reversals:g}; {il}")
+    assert ru_max >= 0.99
+    assert il, "the shear stage did not finish"
+    # the fix's stop: one cycle after initial liquefaction
+    assert "(liquefied)" in log
+    # P_c sums to one, the columns are the compute's
+    for r in rows[:: max(1, len(rows) // 50)]:
+        assert sum(r[COLUMNS.index("P0"):]) == pytest.approx(1.0, abs=1e-4)
+    # constant volume: walls and box do not move in z
+    assert max(col["zhi"]) - min(col["zhi"]) == 0.0
+    assert max(col["zlo"]) - min(col["zlo"]) == 0.0
+
+    # snapshots at every reversal (and zero-crossing), atoms and contacts
+    snaps = sorted(out.glob("snapshots/contacts.*.txt"))
+    assert len(snaps) >= reversals
+    cols, data = read_dump(snaps[-1], "ENTRIES")
+    assert cols == ["id1", "id2", "dx", "dy", "dz", "fn", "ftx", "fty", "ftz"]
+    assert len(data) > 0
+    cols, atoms = read_dump(out / "snapshots/atoms.prep.txt", "ATOMS")
+    assert cols == ["id", "type", "radius", "x", "y", "z", "vx", "vy", "vz", "glue"]
+    glue = [a[-1] for a in atoms]
+    assert glue.count(1.0) == prep["glued_bottom"] > 0
+    assert glue.count(2.0) == prep["glued_top"] > 0
+
+
+def test_kill_and_resume_gives_one_series(protocol, tmp_path):
+    src, _ = protocol
+    # shear stage only, from the prepared sample, over a fixed horizon
+    common = dict(SMALL, stage="shear", restart_every=4000, max_steps=20000,
+                  n_post=1000)
+
+    def fresh(name):
+        out = tmp_path / name
+        (out / "snapshots").mkdir(parents=True)
+        (out / "prep.restart").symlink_to(src / "prep.restart")
+        return out
+
+    ref = fresh("ref")
+    run(ref, **common)
+    ref_rows = read_series(ref / "series.txt")
+
+    killed = fresh("killed")
+    proc = subprocess.Popen(lmp_cmd(killed, **common), stdout=subprocess.DEVNULL,
+                            stderr=subprocess.DEVNULL)
+    deadline = time.time() + 600
+    while not (killed / "shear.restart.4000").exists():
+        assert proc.poll() is None, "the run ended before its first restart file"
+        assert time.time() < deadline
+        time.sleep(0.05)
+    time.sleep(0.3)    # let it write series rows past the restart step
+    proc.send_signal(signal.SIGKILL)
+    proc.wait()
+    before = read_series(killed / "series.txt")
+    last_before = before[-1][0]
+    restarts = sorted(int(p.name.split(".")[-1]) for p in killed.glob("shear.restart.*"))
+    print(f"[ measured ] killed at series step {last_before:g}, restart files {restarts}")
+    assert last_before < 20000, "killed too late: the run had finished"
+
+    run(killed, resume="yes", **common)
+    rows = read_series(killed / "series.txt")
+    steps = [r[0] for r in rows]
+    ref_steps = [r[0] for r in ref_rows]
+    assert steps == ref_steps    # every step once, none lost
+    resumed_at = restarts[-1]
+    n_same = sum(1 for s in ref_steps if s < resumed_at)
+    assert rows[:n_same] == ref_rows[:n_same]
+    # after the restart step: the same protocol state (reversal count and
+    # direction at the end), values close (neighbor lists are rebuilt)
+    assert rows[-1][2:4] == ref_rows[-1][2:4]
+    assert rows[-1][COLUMNS.index("p")] == pytest.approx(ref_rows[-1][COLUMNS.index("p")],
+                                                           rel=1e-3)
+    assert "GRFLOW shear: resuming at step" in (killed / "log.shear.lammps").read_text()
+
+
+@pytest.mark.parametrize("var,expect", [
+    ({"preset": "fast"}, "unknown preset fast"),
+    ({"stage": "both"}, "unknown stage both"),
+    ({"pair": "hertz"}, "unknown pair hertz"),
+    ({"resume": "yes", "stage": "prep"}, "cannot go with stage prep"),
+])
+def test_bad_parameters(tmp_path, var, expect):
+    proc = subprocess.run(lmp_cmd(tmp_path / "bad", screen=True, **var), capture_output=True,
+                          text=True,
+                          timeout=120)
+    text = proc.stdout + proc.stderr + tail(tmp_path / "bad" / "log.prep.lammps")
+    assert proc.returncode != 0
+    assert expect in text
