@@ -174,7 +174,10 @@ def test_kill_and_resume_gives_one_series(protocol, tmp_path):
     rows = read_series(killed / "series.txt")
     steps = [r[0] for r in rows]
     ref_steps = [r[0] for r in ref_rows]
-    assert steps == ref_steps    # every step once, none lost
+    missing = sorted(set(ref_steps) - set(steps))[:10]
+    extra = sorted(set(steps) - set(ref_steps))[:10]
+    dup = len(steps) - len(set(steps))
+    assert steps == ref_steps, f"missing {missing} extra {extra} duplicates {dup}"    # every step once, none lost
     resumed_at = restarts[-1]
     n_same = sum(1 for s in ref_steps if s < resumed_at)
     assert rows[:n_same] == ref_rows[:n_same]
