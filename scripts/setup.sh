@@ -2,7 +2,10 @@
 # Set up GRFLOW from a clean clone: Debian packages, the LAMMPS 4Feb2025
 # source (Debian's source package, cached), LAMMPS with GRFLOW built in,
 # grflowplugin.so and the LAMMPS Python module, installed to /usr/local
-# (root) or ~/.local.  Then checks the installed lmp, plugin and module.
+# (root) or ~/.local.  Then checks the installed lmp, plugin and module,
+# runs the paper's protocol with the quick preset on 2 MPI ranks
+# (runs/quick, a few minutes) and makes the figures of analysis/ from it
+# (runs/quick/figures).  GRFLOW_SKIP_RUN=1 skips the run.
 #
 #   scripts/setup.sh [extra cmake -D options]
 #   e.g. scripts/setup.sh -D LAMMPS_SOURCE_DIR=$HOME/lammps-4Feb2025
@@ -36,3 +39,16 @@ case "$prefix" in
   *) echo "NOTE: add $prefix/bin to PATH and $prefix/$pydir to PYTHONPATH" ;;
 esac
 echo "GRFLOW is set up."
+
+[ "${GRFLOW_SKIP_RUN:-0}" = 1 ] && exit 0
+# the main job: the protocol with the quick preset, then the figures
+np=$(( $(nproc) >= 2 ? 2 : 1 ))
+echo "running the protocol, quick preset, on $np MPI ranks: runs/quick (log: runs/quick/log.*.lammps)"
+rm -rf runs/quick
+start=$(date +%s)
+mpirun --allow-run-as-root --oversubscribe -np "$np" "$lmp" -log none -screen none \
+  -in inputs/cyclic_shear.lmp -var preset quick \
+  || { echo "ERROR: the protocol run failed; see runs/quick/log.*.lammps"; exit 1; }
+echo "protocol done in $(( $(date +%s) - start )) s"
+grep -h "GRFLOW" runs/quick/log.prep.lammps runs/quick/log.shear.lammps | grep -v "^print" || true
+/usr/bin/python3 analysis/make_figures.py runs/quick
