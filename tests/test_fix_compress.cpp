@@ -201,6 +201,31 @@ TEST(Compress, RestartContinues)
   measured("restart: relative difference of Lx", fabs(got[NCOMP] / ref[NCOMP] - 1.0));
 }
 
+TEST(Compress, ElasticEnergyFromAVariable)
+{
+  // for pair styles without an energy (stock pair granular) the elastic
+  // energy can come from a variable, e.g. sum fn^2 / (2 kn)
+  Lammps lmp;
+  cell(lmp);
+  lmp.cmds({"compute pf all pair/local force cutoff radius",
+            "compute fsq all reduce sumsq c_pf inputs local", "variable eel equal c_fsq/(2*1.0e6)",
+            compress_cmd("elastic v_eel"), "run 170000 post no"});
+  const auto c = comp(lmp);
+  // sum f^2/(2 kn) over the normal forces, from single() (pair granular/grflow)
+  auto *fsq = (double *) lammps_extract_compute(lmp.handle, "fsq", LMP_STYLE_GLOBAL,
+                                                LMP_TYPE_SCALAR);
+  ASSERT_NE(fsq, nullptr);
+  const double sumsq = *fsq;
+  EXPECT_GT(c[EEL], 0.0);
+  EXPECT_NEAR(c[EEL], sumsq / 2.0e6, 1e-12 * c[EEL]);
+  EXPECT_DOUBLE_EQ(c[RATIO], c[KE] / c[EEL]);
+  // the normal springs hold most of the pair's elastic energy
+  const double pe = lmp.thermo("pe");
+  printf("[ measured ] sum fn^2/(2 kn) = %.6g J, pair energy = %.6g J\n", c[EEL], pe);
+  EXPECT_GT(c[EEL], 0.5 * pe);
+  EXPECT_LT(c[EEL], 1.5 * pe);
+}
+
 TEST(Compress, WallCoefficientByFixModify)
 {
   // fix_modify w mut 0.1 on a wall made with mut 0.5 gives the trajectory of
@@ -243,6 +268,7 @@ TEST(Compress, BadInput)
       {"fix c all grflow/compress w net 1e5 10 bogus 1", "Unknown fix grflow/compress keyword"},
       {"fix c all grflow/compress w net 1e5 10 every", "fix grflow/compress every"},
       {"fix c all grflow/compress w net 1e5 ten", "Expected floating point"},
+      {"fix c all grflow/compress w net 1e5 10 elastic 3", "elastic takes an equal-style variable"},
   };
   for (const auto &c : cases) {
     const std::string msg = error_after(base, c.line);
@@ -263,6 +289,10 @@ TEST(Compress, BadInput)
        "Fix grflow/compress: compute ke is not a compute grflow/network"},
       {{"unfix w", "fix w all grflow/wall 1.0e6 1.15 zlo 0"},
        "fix c all grflow/compress w net 1e5 10", "must have both walls"},
+      {{}, "fix c all grflow/compress w net 1e5 10 elastic v_nothere",
+       "Fix grflow/compress: variable nothere does not exist"},
+      {{"variable a atom x"}, "fix c all grflow/compress w net 1e5 10 elastic v_a",
+       "Fix grflow/compress: variable a is not equal-style"},
       {{"fix def all deform 1 x scale 0.99"}, "fix c all grflow/compress w net 1e5 10",
        "Must not have multiple fixes change box parameter x"},
   };

@@ -35,9 +35,11 @@
 #include "error.h"
 #include "fix_grflow_wall.h"
 #include "force.h"
+#include "input.h"
 #include "math_const.h"
 #include "modify.h"
 #include "update.h"
+#include "variable.h"
 
 #include <cmath>
 #include <cstring>
@@ -50,8 +52,8 @@ static constexpr int NRESTART = 4;    // rates x y z, started
 /* ---------------------------------------------------------------------- */
 
 FixGRFLOWCompress::FixGRFLOWCompress(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), id_wall(nullptr), id_network(nullptr), id_pe(nullptr), wall(nullptr),
-    network(nullptr), pe(nullptr)
+    Fix(lmp, narg, arg), id_wall(nullptr), id_network(nullptr), id_pe(nullptr),
+    elastic_var(nullptr), ivar_elastic(-1), wall(nullptr), network(nullptr), pe(nullptr)
 {
   if (narg < 7)
     error->all(FLERR, "Illegal fix grflow/compress command: expected wall-ID compute-ID "
@@ -82,6 +84,15 @@ FixGRFLOWCompress::FixGRFLOWCompress(LAMMPS *lmp, int narg, char **arg) :
   while (iarg < narg) {
     const std::string kw = arg[iarg];
     if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, "fix grflow/compress " + kw, error);
+    if (kw == "elastic") {
+      if (!utils::strmatch(arg[iarg + 1], "^v_"))
+        error->all(FLERR, "Fix grflow/compress elastic takes an equal-style variable v_name, got {}",
+                   arg[iarg + 1]);
+      delete[] elastic_var;
+      elastic_var = utils::strdup(arg[iarg + 1] + 2);
+      iarg += 2;
+      continue;
+    }
     const double value = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
     if (kw == "gain") {
       gain = value;
@@ -131,6 +142,7 @@ FixGRFLOWCompress::~FixGRFLOWCompress()
   delete[] id_wall;
   delete[] id_network;
   delete[] id_pe;
+  delete[] elastic_var;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -161,6 +173,13 @@ void FixGRFLOWCompress::init()
 
   pe = modify->get_compute_by_id(id_pe);
   if (!pe) error->all(FLERR, "Fix grflow/compress: its compute {} was deleted", id_pe);
+  if (elastic_var) {
+    ivar_elastic = input->variable->find(elastic_var);
+    if (ivar_elastic < 0)
+      error->all(FLERR, "Fix grflow/compress: variable {} does not exist", elastic_var);
+    if (!input->variable->equalstyle(ivar_elastic))
+      error->all(FLERR, "Fix grflow/compress: variable {} is not equal-style", elastic_var);
+  }
 
   // solid volume of the fix group, for the void ratio
   const double *radius = atom->radius;
@@ -174,7 +193,7 @@ void FixGRFLOWCompress::init()
   dt = update->dt;
 
   // the energy must be tallied on the step the first servo update reads it
-  pe->addstep(update->ntimestep);
+  if (!elastic_var) pe->addstep(update->ntimestep);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -188,7 +207,7 @@ void FixGRFLOWCompress::setup(int /*vflag*/)
   if (!started || update->ntimestep % servo_every == 0) servo();
   started = 1;
   const bigint next = (update->ntimestep / servo_every + 1) * servo_every;
-  pe->addstep(next);
+  if (!elastic_var) pe->addstep(next);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -197,7 +216,7 @@ void FixGRFLOWCompress::end_of_step()
 {
   if (update->ntimestep % servo_every == 0) {
     servo();
-    pe->addstep(update->ntimestep + servo_every);
+    if (!elastic_var) pe->addstep(update->ntimestep + servo_every);
   }
   deform_box();
 }
@@ -239,7 +258,13 @@ void FixGRFLOWCompress::servo()
   }
   MPI_Allreduce(&kelocal, &ke, 1, MPI_DOUBLE, MPI_SUM, world);
   ke *= 0.5 * force->mvv2e;
-  eel = pe->compute_scalar();
+  if (elastic_var) {
+    modify->clearstep_compute();
+    eel = input->variable->compute_equal(ivar_elastic);
+    modify->addstep_compute(update->ntimestep + servo_every);
+  } else {
+    eel = pe->compute_scalar();
+  }
 
   drive_walls();
 }

@@ -45,6 +45,8 @@ class FixGRFLOWCompress : public Fix {
 
  private:
   char *id_wall, *id_network, *id_pe;
+  char *elastic_var;    // equal-style variable giving the elastic energy, or null
+  int ivar_elastic;
   class FixGRFLOWWall *wall;
   class ComputeGRFLOWNetwork *network;
   class Compute *pe;
