@@ -181,11 +181,20 @@ def test_kill_and_resume_gives_one_series(protocol, tmp_path):
     resumed_at = restarts[-1]
     n_same = sum(1 for s in ref_steps if s < resumed_at)
     assert rows[:n_same] == ref_rows[:n_same]
-    # after the restart step: the same protocol state (reversal count and
-    # direction at the end), values close (neighbor lists are rebuilt)
+    # at the restart step the state is the restart file's: the same to
+    # round-off (the neighbor lists are rebuilt, sums run in another order)
+    k = steps.index(resumed_at)
+    for name in ("tau", "p", "z_g"):
+        c = COLUMNS.index(name)
+        assert rows[k][c] == pytest.approx(ref_rows[k][c], rel=1e-9, abs=1e-9), name
+    # later on the round-off grows (a dense packing is chaotic); the protocol
+    # state is the same and the stresses are close
+    p = COLUMNS.index("p")
+    dp = abs(rows[-1][p] / ref_rows[-1][p] - 1.0)
+    print(f"[ measured ] resumed at {resumed_at}: relative difference of p at step "
+          f"{steps[-1]:g}: {dp:.1e}")
     assert rows[-1][2:4] == ref_rows[-1][2:4]
-    assert rows[-1][COLUMNS.index("p")] == pytest.approx(ref_rows[-1][COLUMNS.index("p")],
-                                                           rel=1e-3)
+    assert dp < 0.02
     assert "GRFLOW shear: resuming at step" in (killed / "log.shear.lammps").read_text()
 
 
