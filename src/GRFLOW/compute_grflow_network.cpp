@@ -517,3 +517,16 @@ double ComputeGRFLOWNetwork::memory_usage()
 {
   return 2.0 * nmax * sizeof(double);
 }
+
+/* ---------------------------------------------------------------------- */
+
+ComputeGRFLOWNetwork *ComputeGRFLOWNetwork::find(LAMMPS *lmp, const std::string &caller,
+                                                 const char *id)
+{
+  auto *icompute = lmp->modify->get_compute_by_id(id);
+  if (!icompute) lmp->error->all(FLERR, "{}: compute {} does not exist", caller, id);
+  auto *network = dynamic_cast<ComputeGRFLOWNetwork *>(icompute);
+  if (!network || strcmp(icompute->style, "grflow/network") != 0)
+    lmp->error->all(FLERR, "{}: compute {} is not a compute grflow/network", caller, id);
+  return network;
+}

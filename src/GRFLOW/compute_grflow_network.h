@@ -22,6 +22,8 @@ ComputeStyle(grflow/network,ComputeGRFLOWNetwork);
 
 #include "compute.h"
 
+#include <string>
+
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -30,6 +32,10 @@ class ComputeGRFLOWNetwork : public Compute {
  public:
   ComputeGRFLOWNetwork(class LAMMPS *, int, char **);
   ~ComputeGRFLOWNetwork() override;
+
+  // the compute grflow/network with ID id, for another command (caller,
+  // e.g. "Fix grflow/shear"); an error otherwise
+  static ComputeGRFLOWNetwork *find(class LAMMPS *lmp, const std::string &caller, const char *id);
   void init() override;
   void compute_vector() override;
   int pack_forward_comm(int, int *, double *, int, int *) override;

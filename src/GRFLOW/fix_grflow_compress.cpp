@@ -156,20 +156,8 @@ int FixGRFLOWCompress::setmask()
 
 void FixGRFLOWCompress::init()
 {
-  auto *ifix = modify->get_fix_by_id(id_wall);
-  if (!ifix) error->all(FLERR, "Fix grflow/compress: fix {} does not exist", id_wall);
-  wall = dynamic_cast<FixGRFLOWWall *>(ifix);
-  if (!wall || strcmp(ifix->style, "grflow/wall") != 0)
-    error->all(FLERR, "Fix grflow/compress: fix {} is not a fix grflow/wall", id_wall);
-  if (!wall->wall(FixGRFLOWWall::LO).active || !wall->wall(FixGRFLOWWall::HI).active)
-    error->all(FLERR, "Fix grflow/compress: fix {} must have both walls, zlo and zhi", id_wall);
-
-  auto *icompute = modify->get_compute_by_id(id_network);
-  if (!icompute) error->all(FLERR, "Fix grflow/compress: compute {} does not exist", id_network);
-  network = dynamic_cast<ComputeGRFLOWNetwork *>(icompute);
-  if (!network || strcmp(icompute->style, "grflow/network") != 0)
-    error->all(FLERR, "Fix grflow/compress: compute {} is not a compute grflow/network",
-               id_network);
+  wall = FixGRFLOWWall::find_cell(lmp, "Fix grflow/compress", id_wall);
+  network = ComputeGRFLOWNetwork::find(lmp, "Fix grflow/compress", id_network);
 
   pe = modify->get_compute_by_id(id_pe);
   if (!pe) error->all(FLERR, "Fix grflow/compress: its compute {} was deleted", id_pe);

@@ -150,19 +150,8 @@ int FixGRFLOWShear::setmask()
 
 void FixGRFLOWShear::init()
 {
-  auto *ifix = modify->get_fix_by_id(id_wall);
-  if (!ifix) error->all(FLERR, "Fix grflow/shear: fix {} does not exist", id_wall);
-  wall = dynamic_cast<FixGRFLOWWall *>(ifix);
-  if (!wall || strcmp(ifix->style, "grflow/wall") != 0)
-    error->all(FLERR, "Fix grflow/shear: fix {} is not a fix grflow/wall", id_wall);
-  if (!wall->wall(FixGRFLOWWall::LO).active || !wall->wall(FixGRFLOWWall::HI).active)
-    error->all(FLERR, "Fix grflow/shear: fix {} must have both walls, zlo and zhi", id_wall);
-
-  auto *icompute = modify->get_compute_by_id(id_network);
-  if (!icompute) error->all(FLERR, "Fix grflow/shear: compute {} does not exist", id_network);
-  network = dynamic_cast<ComputeGRFLOWNetwork *>(icompute);
-  if (!network || strcmp(icompute->style, "grflow/network") != 0)
-    error->all(FLERR, "Fix grflow/shear: compute {} is not a compute grflow/network", id_network);
+  wall = FixGRFLOWWall::find_cell(lmp, "Fix grflow/shear", id_wall);
+  network = ComputeGRFLOWNetwork::find(lmp, "Fix grflow/shear", id_network);
 
   if (iglue >= 0) {
     if (group->find(group->names[iglue]) != iglue)

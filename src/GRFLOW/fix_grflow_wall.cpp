@@ -31,6 +31,7 @@
 #include "domain.h"
 #include "error.h"
 #include "memory.h"
+#include "modify.h"
 #include "update.h"
 
 #include <cmath>
@@ -449,4 +450,18 @@ int FixGRFLOWWall::size_restart(int /*nlocal*/)
 int FixGRFLOWWall::maxsize_restart()
 {
   return NHIST + 1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+FixGRFLOWWall *FixGRFLOWWall::find_cell(LAMMPS *lmp, const std::string &caller, const char *id)
+{
+  auto *ifix = lmp->modify->get_fix_by_id(id);
+  if (!ifix) lmp->error->all(FLERR, "{}: fix {} does not exist", caller, id);
+  auto *wall = dynamic_cast<FixGRFLOWWall *>(ifix);
+  if (!wall || strcmp(ifix->style, "grflow/wall") != 0)
+    lmp->error->all(FLERR, "{}: fix {} is not a fix grflow/wall", caller, id);
+  if (!wall->walls[LO].active || !wall->walls[HI].active)
+    lmp->error->all(FLERR, "{}: fix {} must have both walls, zlo and zhi", caller, id);
+  return wall;
 }

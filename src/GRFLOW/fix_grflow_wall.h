@@ -53,6 +53,10 @@ class FixGRFLOWWall : public Fix {
 
   enum { LO, HI, NWALL };
 
+  // the fix grflow/wall with ID id that has both walls, for another
+  // command (caller, e.g. "Fix grflow/shear"); an error otherwise
+  static FixGRFLOWWall *find_cell(class LAMMPS *lmp, const std::string &caller, const char *id);
+
   // a flat wall normal to z: "lo" pushes up (+z), "hi" pushes down (-z)
   struct Wall {
     int active;
