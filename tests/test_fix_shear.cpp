@@ -73,6 +73,13 @@ std::vector<double> cvec(Lammps &lmp, const char *id)
 
 long step(Lammps &lmp) { return (long) lmp.thermo("step"); }
 
+std::string join(const std::vector<long> &v)
+{
+  std::string s;
+  for (auto x : v) s += " " + std::to_string(x);
+  return s;
+}
+
 std::string slurp(const std::string &file)
 {
   std::ifstream in(file);
@@ -200,10 +207,8 @@ TEST_F(Shear, WallVelocityAndReversalRule)
     EXPECT_EQ(r.ly, rec[0].ly);
     EXPECT_EQ(r.vol, rec[0].vol);
   }
-  std::string steps;
-  for (auto s : rev_steps) steps += " " + std::to_string(s);
   printf("[ measured ] p0 = %.6g Pa, tau_amp = %.6g Pa, reversal steps:%s\n", p, amp,
-         steps.c_str());
+         join(rev_steps).c_str());
   measured("max |x_w - vx dt sum(direction)| (m)", xerr);
   measured("x_w at the end (m)", rec.back().sh[XWALL]);
   EXPECT_LT(xerr, 1.0e-18);
@@ -363,13 +368,14 @@ TEST_F(Shear, StopCyclesAndHalt)
   EXPECT_EQ(shear(lmp)[DONE], 1.0);
 }
 
-// reversal steps from a fix print file: lines "step reversals"
-std::vector<long> reversal_steps(const std::string &file)
+// reversal steps from a fix print file (lines "step reversals"): the steps
+// where the count differs from the line before, the first line compared
+// with `last`
+std::vector<long> reversal_steps(const std::string &file, double last = 0.0)
 {
   std::ifstream in(file);
   std::vector<long> out;
   std::string line;
-  double last = 0.0;
   while (std::getline(in, line)) {
     if (line.empty() || line[0] == '#') continue;
     std::istringstream ss(line);
@@ -380,13 +386,6 @@ std::vector<long> reversal_steps(const std::string &file)
     last = rev;
   }
   return out;
-}
-
-std::string join(const std::vector<long> &v)
-{
-  std::string s;
-  for (auto x : v) s += " " + std::to_string(x);
-  return s;
 }
 
 void shear_run_with_record(Lammps &lmp, double p, const std::string &file, bool newfix)
@@ -395,24 +394,6 @@ void shear_run_with_record(Lammps &lmp, double p, const std::string &file, bool 
   lmp.cmds({"variable rev equal f_sh[2]",
             "fix rec all print " + std::to_string(EVERY) + " \"$(step) ${rev}\" file " + file +
                 " screen no"});
-}
-
-// reversal steps in a fix print file after a given reversal count
-std::vector<long> reversal_steps_after(const std::string &file, double last)
-{
-  std::ifstream in(file);
-  std::vector<long> out;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    std::istringstream ss(line);
-    long s;
-    double rev;
-    ss >> s >> rev;
-    if (rev != last) out.push_back(s);
-    last = rev;
-  }
-  return out;
 }
 
 // A: one run of 6000 steps.  A2: the same split into two runs in one
@@ -472,7 +453,7 @@ TEST_F(Shear, RestartContinuesTheProtocol)
     lmp.cmd("unfix rec");
     std::vector<long> rb;
     for (long st : ra) if (st <= step(lmp) - (S - split)) rb.push_back(st);
-    for (long st : reversal_steps_after(f2, rev_mid)) rb.push_back(st);
+    for (long st : reversal_steps(f2, rev_mid)) rb.push_back(st);
     printf("[ measured ] split at %d: reversal steps A2%s, B%s\n", split, join(ra2).c_str(),
            join(rb).c_str());
     EXPECT_EQ(ra2, ra) << "split at " << split;
@@ -559,6 +540,8 @@ TEST_F(Shear, BadArguments)
        "Fix grflow/shear stop_gamma must be > 0"},
       {"fix sh all grflow/shear w net 0.02 1000 glue nogroup",
        "Fix grflow/shear glue group nogroup does not exist"},
+      {"fix sh all grflow/shear w net 0.02 1000 progress maybe",
+       "Expected boolean parameter instead of 'maybe'"},
   };
   for (const auto &c : cases) {
     const std::string msg = error_after(setup, c.line);

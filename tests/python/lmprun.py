@@ -25,6 +25,23 @@ def run_lmp(args, cwd, nprocs=1, stdin=None, check=True, timeout=600):
     return proc
 
 
+def cell_from_restart(restart, newton="on", grid="1 1 1", wall="1.0e6 1.15"):
+    """Deck lines that continue a packing between two GRFLOW walls from a
+    restart file: newton, processor grid, the settings restart files do not
+    keep, fix w (grflow/wall with coefficients `wall`; its positions come
+    from the restart file), fix nve, and variables zlo, zhi of the walls."""
+    return (f"newton          {newton}\n"
+            f"processors      {grid}\n"
+            f"read_restart    {restart}\n"
+            "comm_modify     vel yes\n"
+            "neighbor        0.2e-3 bin\n"
+            "neigh_modify    delay 0 every 1 check yes\n"
+            f"fix             w all grflow/wall {wall} zlo 0.0 zhi 8.0e-3\n"
+            "fix             nve all nve/sphere\n"
+            "variable        zlo equal f_w[4]\n"
+            "variable        zhi equal f_w[10]\n")
+
+
 def make_packing(work, nside=7, seed=99, dmin=1.0e-3, dmax=2.0e-3, phi=0.60, ncomp=30000):
     """A dense periodic packing of nside^3 spheres (tests/decks/dense_packing.lmp),
     written to work/packing.data; returns that path."""

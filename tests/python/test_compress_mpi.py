@@ -18,7 +18,7 @@ import os
 
 import pytest
 
-from lmprun import DECKS, run_lmp
+from lmprun import DECKS, cell_from_restart, run_lmp
 
 PREP = """
 include         {cell}
@@ -29,17 +29,8 @@ write_restart   {restart}
 """
 
 DECK = """
-newton          {newton}
-processors      {grid}
-read_restart    {restart}
-comm_modify     vel yes
-neighbor        0.2e-3 bin
-neigh_modify    delay 0 every 1 check yes
-fix             w all grflow/wall 1.0e6 1.15 mut 0.1 zlo 0 zhi 1
-variable        zlo equal f_w[4]
-variable        zhi equal f_w[10]
+{cell}
 compute         net all grflow/network zlimits v_zlo v_zhi slab 1.0
-fix             nve all nve/sphere
 fix             cmp all grflow/compress w net 1.3e5 20 gain 5 every 10
 thermo          5000
 run             20000
@@ -61,7 +52,7 @@ def packing(tmp_path_factory):
 def compressed(packing, nprocs, newton, grid):
     work, restart = packing
     deck = work / f"compress_{nprocs}_{newton}_{grid.replace(' ', '')}.lmp"
-    deck.write_text(DECK.format(newton=newton, grid=grid, restart=restart))
+    deck.write_text(DECK.format(cell=cell_from_restart(restart, newton, grid, wall="1.0e6 1.15 mut 0.1")))
     out = run_lmp(["-in", str(deck)], work, nprocs).stdout
     assert f"{grid.replace(' ', ' by ')} MPI processor grid" in out
     line = next(l for l in out.splitlines() if l.startswith("COMP"))

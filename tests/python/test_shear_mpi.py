@@ -19,23 +19,14 @@ import os
 
 import pytest
 
-from lmprun import DECKS, run_lmp
+from lmprun import DECKS, cell_from_restart, run_lmp
 
 STEPS = 6000
 EVERY = 20
 
 
 SHEAR = """
-newton          {newton}
-processors      {grid}
-read_restart    {restart}
-comm_modify     vel yes
-neighbor        0.2e-3 bin
-neigh_modify    delay 0 every 1 check yes
-fix             w all grflow/wall 1.0e6 1.15 zlo 0.0 zhi 8.0e-3
-fix             nve all nve/sphere
-variable        zlo equal f_w[4]
-variable        zhi equal f_w[10]
+{cell}
 compute         net all grflow/network zlimits v_zlo v_zhi
 run             0 post no
 variable        amp equal 0.3*c_net[7]
@@ -67,7 +58,7 @@ def sheared(packing, nprocs, newton, grid):
     tag = f"np{nprocs}_{newton}_{grid.replace(' ', '')}"
     record = work / f"record_{tag}.txt"
     deck = work / f"shear_{tag}.lmp"
-    deck.write_text(SHEAR.format(newton=newton, grid=grid, restart=restart, steps=STEPS,
+    deck.write_text(SHEAR.format(cell=cell_from_restart(restart, newton, grid), steps=STEPS,
                                  every=EVERY, record=record))
     out = run_lmp(["-in", str(deck)], work, nprocs).stdout
     lines = out.splitlines()

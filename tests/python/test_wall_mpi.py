@@ -21,20 +21,13 @@ import os
 import numpy as np
 import pytest
 
-from lmprun import DECKS, run_lmp
+from lmprun import DECKS, cell_from_restart, run_lmp
 
 STEPS = 2000
 
 
 SHEAR = """
-newton          {newton}
-processors      {grid}
-read_restart    {restart}
-comm_modify     vel yes
-neighbor        0.2e-3 bin
-neigh_modify    delay 0 every 1 check yes
-fix             w all grflow/wall 1.0e6 1.15 zlo 0.0 zhi 8.0e-3
-fix             nve all nve/sphere
+{cell}
 velocity        all set 15.0 NULL NULL sum yes
 fix_modify      w wall lo vel 15.0 0 0 wall hi vel 16.0 -0.3 -0.01
 thermo          1000
@@ -80,7 +73,8 @@ def sheared(packing, nprocs, newton, grid):
     tag = f"np{nprocs}_{newton}_{grid.replace(' ', '')}"
     dump = work / f"final_{tag}.dump"
     deck = work / f"shear_{tag}.lmp"
-    deck.write_text(SHEAR.format(newton=newton, grid=grid, restart=restart, steps=STEPS, dump=dump))
+    deck.write_text(SHEAR.format(cell=cell_from_restart(restart, newton, grid), steps=STEPS,
+                                 dump=dump))
     out = run_lmp(["-in", str(deck)], work, nprocs).stdout
     # the settings really were those asked for
     flags = next(line for line in out.splitlines() if line.startswith("NEWTON")).split()
