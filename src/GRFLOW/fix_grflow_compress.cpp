@@ -77,7 +77,7 @@ FixGRFLOWCompress::FixGRFLOWCompress(LAMMPS *lmp, int narg, char **arg) :
 
   gain = 10.0;
   tol = 0.01;
-  ke_ratio_max = 1.0e-4;
+  ke_ratio_max = 1.0e-3;
   servo_every = 1;
 
   int iarg = 7;
@@ -121,10 +121,13 @@ FixGRFLOWCompress::FixGRFLOWCompress(LAMMPS *lmp, int narg, char **arg) :
   restart_global = 1;
   box_change |= BOX_CHANGE_X | BOX_CHANGE_Y;
 
-  // the elastic energy is the potential energy of the pair style, tallied
-  // on the servo steps only (as fix box/relax does with its compute pe)
-  id_pe = utils::strdup(std::string(id) + "_pe");
-  pe = modify->add_compute(fmt::format("{} all pe", id_pe));
+  // without an elastic variable the elastic energy is the potential energy
+  // of the pair style, tallied on the servo steps only (as fix box/relax
+  // does with its compute pe)
+  if (!elastic_var) {
+    id_pe = utils::strdup(std::string(id) + "_pe");
+    pe = modify->add_compute(fmt::format("{} all pe", id_pe));
+  }
 
   rate[0] = rate[1] = rate[2] = 0.0;
   sigma[0] = sigma[1] = sigma[2] = 0.0;
@@ -138,7 +141,7 @@ FixGRFLOWCompress::FixGRFLOWCompress(LAMMPS *lmp, int narg, char **arg) :
 
 FixGRFLOWCompress::~FixGRFLOWCompress()
 {
-  if (modify->get_compute_by_id(id_pe)) modify->delete_compute(id_pe);
+  if (id_pe && modify->get_compute_by_id(id_pe)) modify->delete_compute(id_pe);
   delete[] id_wall;
   delete[] id_network;
   delete[] id_pe;
@@ -159,9 +162,10 @@ void FixGRFLOWCompress::init()
   wall = FixGRFLOWWall::find_cell(lmp, "Fix grflow/compress", id_wall);
   network = ComputeGRFLOWNetwork::find(lmp, "Fix grflow/compress", id_network);
 
-  pe = modify->get_compute_by_id(id_pe);
-  if (!pe) error->all(FLERR, "Fix grflow/compress: its compute {} was deleted", id_pe);
-  if (elastic_var) {
+  if (!elastic_var) {
+    pe = modify->get_compute_by_id(id_pe);
+    if (!pe) error->all(FLERR, "Fix grflow/compress: its compute {} was deleted", id_pe);
+  } else {
     ivar_elastic = input->variable->find(elastic_var);
     if (ivar_elastic < 0)
       error->all(FLERR, "Fix grflow/compress: variable {} does not exist", elastic_var);
