@@ -1093,3 +1093,89 @@ TEST(ContactKernel, ZeroCoefficientModes)
   EXPECT_EQ(norm(tov(out.torque_i)), 0.0);
   EXPECT_EQ(norm(tov(out.torque_j)), 0.0);
 }
+
+/* ----------------------------------------------------------------------
+   contact_forces() (sliding and rolling springs in the two lanes of one
+   vector, branch-free caps) against contact_forces_reference() (one mode
+   after the other): the same numbers, not just close ones, over random
+   contacts that stick, slip in any combination of modes, start with empty
+   springs, turn a lot in one step (the scalar fallback of the rotation),
+   have zero stiffness or friction, or are evaluated without update.
+------------------------------------------------------------------------- */
+
+TEST(ContactKernel, VectorLanesEqualReference)
+{
+  std::printf("[   INFO   ] two-lane kernel compiled in: %s\n",
+              GRFLOW_HAVE_VEC2 ? "yes" : "no (contact_forces is the reference)");
+  std::mt19937 gen(987654);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), upos(0.0, 1.0);
+  auto rvec = [&](double s) {
+    return V3{s * u(gen), s * u(gen), s * u(gen)};
+  };
+  const double radi = 0.8e-3, radj = 0.6e-3, dt = 1.0e-6;
+  int cases = 0, slip_t = 0, slip_r = 0, slip_o = 0, both = 0, fresh = 0, big_turn = 0;
+  int mismatches = 0;
+
+  for (int trial = 0; trial < 400; ++trial) {
+    ContactCoeffs c = table1();
+    const int variant = trial % 8;
+    if (variant == 5) c.kt = c.kr = c.ko = 0.0;       // pure dashpots
+    if (variant == 6) c.mut = c.mur = c.muo = 0.0;    // frictionless: every mode slips
+    if (variant == 7) c.mur = c.muo = 1.0e-4;         // rolling and torsion always at the cap
+
+    double ha[HIST_SIZE], hb[HIST_SIZE];
+    for (int m = 0; m < HIST_SIZE; ++m) ha[m] = hb[m] = (variant == 1) ? 0.0 : 4.0e-6 * u(gen);
+    if (variant == 1) ++fresh;
+    if (variant == 3) ha[HIST_SLIDE] = hb[HIST_SLIDE] = 0.0;    // one lane empty
+
+    V3 n = unit(rvec(1.0));
+    for (int step = 0; step < 10; ++step) {
+      // a normal that turns a little each step; variant 2 turns by ~0.1 rad
+      n = unit(add(n, rvec(variant == 2 ? 0.1 : 1.0e-4)));
+      if (variant == 2) ++big_turn;
+      const double delta = 1.0e-6 + 2.0e-5 * upos(gen);
+      const double r = radi + radj - delta;
+      const V3 del = mul(r, n);
+      const V3 vrel = rvec(variant == 4 ? 1.0e-3 : 0.5);
+      const V3 wi = rvec(3000.0), wj = rvec(3000.0);
+      const bool update = (step % 5 != 4);
+
+      ContactGeometry g;
+      pair_geometry(del.data(), r, radi, radj, variant == 0, g);
+      ContactForces a, b;
+      contact_forces(c, g, vrel.data(), wi.data(), wj.data(), dt, update, ha, a);
+      contact_forces_reference(c, g, vrel.data(), wi.data(), wj.data(), dt, update, hb, b);
+      ++cases;
+      const bool st = norm(tov(b.ft)) >= c.mut * b.fn * (1.0 - 1.0e-12) && b.fn > 0.0;
+      const bool sr = norm(tov(b.fr)) >= c.mur * b.fn * (1.0 - 1.0e-12) && b.fn > 0.0;
+      slip_t += st;
+      slip_r += sr;
+      both += st && sr;
+      slip_o += std::fabs(b.fo) >= c.muo * b.fn * (1.0 - 1.0e-12) && b.fn > 0.0;
+
+      int bad = (a.fn != b.fn) + (a.fo != b.fo);
+      for (int d = 0; d < 3; ++d)
+        bad += (a.f[d] != b.f[d]) + (a.ft[d] != b.ft[d]) + (a.fr[d] != b.fr[d]) +
+            (a.torque_i[d] != b.torque_i[d]) + (a.torque_j[d] != b.torque_j[d]);
+      for (int m = 0; m < HIST_SIZE; ++m) bad += (ha[m] != hb[m]);
+      if (bad) {
+        ++mismatches;
+        ADD_FAILURE() << "trial " << trial << " step " << step << ": " << bad
+                      << " values differ; ft " << a.ft[0] << " vs " << b.ft[0] << ", fr " << a.fr[0]
+                      << " vs " << b.fr[0] << ", hist[0] " << ha[0] << " vs " << hb[0];
+        for (int m = 0; m < HIST_SIZE; ++m) ha[m] = hb[m];    // resynchronise
+      }
+    }
+  }
+  // the cases must cover what the two-lane code does differently
+  EXPECT_GT(slip_t, 100);
+  EXPECT_GT(slip_r, 100);
+  EXPECT_GT(slip_o, 100);
+  EXPECT_GT(both, 50);
+  EXPECT_LT(slip_t, cases);
+  EXPECT_LT(slip_r, cases);
+  EXPECT_GT(fresh, 0);
+  EXPECT_GT(big_turn, 0);
+  std::printf("[   INFO   ] %d contacts: %d mismatches; slip t/r/o %d/%d/%d (t and r %d)\n", cases,
+              mismatches, slip_t, slip_r, slip_o, both);
+}
