@@ -163,8 +163,8 @@ void setup_three_spheres(Lammps &lmp, const std::vector<Sphere> &s, double dt)
     lmp.cmd(line);
   }
   lmp.cmds({"pair_style granular/grflow", "pair_coeff 1 1 1.0e6 1.15",
-            "pair_coeff 2 2 2.0e6 0.8 mut 0.3 mur 0.2 co 0.01",
-            "timestep " + fmt_double(dt), "fix nve all nve/sphere"});
+            "pair_coeff 2 2 2.0e6 0.8 mut 0.3 mur 0.2 co 0.01", "timestep " + fmt_double(dt),
+            "fix nve all nve/sphere"});
 }
 
 TEST(PairGRFLOW, ThreeSpheresFollowKernel)
@@ -207,6 +207,75 @@ TEST(PairGRFLOW, ThreeSpheresFollowKernel)
       EXPECT_TRUE(ref.twisted);
     }
   }
+}
+
+// special bonds: a bonded pair's contact is scaled by special_lj (1-2
+// weight), as in stock pair granular; a molecular atom style without bonds
+// gives exactly the atomic result (the pair loop has a separate path for
+// atomic systems)
+TEST(PairGRFLOW, SpecialBondsScaleContact)
+{
+  if (!lammps_config_has_package("MOLECULE"))
+    GTEST_SKIP() << "needs the MOLECULE package (atom_style bond), which this LAMMPS lacks";
+  const double dt = 1.0e-8;
+  auto spheres = three_spheres();
+  spheres.resize(2);    // spheres 1 and 2 overlap
+
+  auto run_case = [&](bool molecular, const std::string &special, bool bonded,
+                      std::vector<double> &f, std::vector<double> &t, int nsteps) {
+    Lammps lmp;
+    if (!molecular) {
+      setup_three_spheres(lmp, spheres, dt);
+    } else {
+      lmp.cmds({"units si", "atom_style hybrid sphere bond", "atom_modify map array",
+                "boundary f f f", "comm_modify vel yes",
+                "region box block -0.005 0.005 -0.005 0.005 -0.005 0.005",
+                "create_box 2 box bond/types 1 extra/bond/per/atom 1 extra/special/per/atom 1",
+                "neighbor 0.5e-3 bin", "neigh_modify delay 0 every 1 check yes", "bond_style zero",
+                "bond_coeff 1", "special_bonds " + special});
+      for (size_t i = 0; i < spheres.size(); i++) {
+        const auto &p = spheres[i];
+        lmp.cmd("create_atoms " + std::to_string(p.type) + " single " + fmt_double(p.x[0]) + " " +
+                fmt_double(p.x[1]) + " " + fmt_double(p.x[2]) + " units box");
+        lmp.cmd("set atom " + std::to_string(i + 1) + " diameter " + fmt_double(2.0 * p.rad) +
+                " density 2650 vx " + fmt_double(p.v[0]) + " vy " + fmt_double(p.v[1]) + " vz " +
+                fmt_double(p.v[2]) + " omega " + fmt_double(p.w[0]) + " " + fmt_double(p.w[1]) +
+                " " + fmt_double(p.w[2]));
+      }
+      if (bonded) lmp.cmd("create_bonds single/bond 1 1 2");
+      lmp.cmds({"pair_style granular/grflow", "pair_coeff 1 1 1.0e6 1.15",
+                "pair_coeff 2 2 2.0e6 0.8 mut 0.3 mur 0.2 co 0.01", "timestep " + fmt_double(dt),
+                "fix nve all nve/sphere"});
+    }
+    lmp.cmd("run " + std::to_string(nsteps));
+    f = lmp.gather3("f");
+    t = lmp.gather3("torque");
+  };
+
+  std::vector<double> fa, ta, fb, tb, fh, th, fz, tz;
+  run_case(false, "", false, fa, ta, 0);
+  ASSERT_GT(std::fabs(fa[0]), 0.0);
+  // molecular style, no bonds: the same numbers as the atomic loop
+  run_case(true, "lj 0.5 1.0 1.0", false, fb, tb, 0);
+  EXPECT_EQ(max_rel_diff(fb, fa), 0.0);
+  EXPECT_EQ(max_rel_diff(tb, ta), 0.0);
+  // bonded, 1-2 weight 0.5: half the force and torque
+  run_case(true, "lj 0.5 1.0 1.0", true, fh, th, 0);
+  for (double &x : fa) x *= 0.5;
+  for (double &x : ta) x *= 0.5;
+  EXPECT_LT(measured("special 0.5 force vs half of unbonded", max_rel_diff(fh, fa)), 1.0e-15);
+  EXPECT_LT(measured("special 0.5 torque vs half of unbonded", max_rel_diff(th, ta)), 1.0e-15);
+  // bonded, weight 0: no contact at all
+  run_case(true, "lj 0.0 1.0 1.0", true, fz, tz, 0);
+  for (size_t k = 0; k < fz.size(); k++) {
+    EXPECT_EQ(fz[k], 0.0);
+    EXPECT_EQ(tz[k], 0.0);
+  }
+  // over a run, too: atomic and molecular-without-bonds trajectories agree exactly
+  run_case(false, "", false, fa, ta, 200);
+  run_case(true, "lj 0.5 1.0 1.0", false, fb, tb, 200);
+  EXPECT_EQ(max_rel_diff(fb, fa), 0.0);
+  EXPECT_EQ(max_rel_diff(tb, ta), 0.0);
 }
 
 // ---------------------------------------------------------------------------
@@ -283,13 +352,13 @@ TEST_F(Packings, WriteDataKeepsCoefficients)
       "pair_style granular/grflow", "pair_coeff 1 1 1.0e6 1.15",
       "pair_coeff 2 2 3.0e6 0.9 kt 1.0e6 ct 0.1 mut 0.4 kr 2.0e5 cr 0.02 mur 0.15 torsion off",
       "pair_coeff 1 2 2.0e6 1.0 mut 0.2"};
-  const std::vector<std::string> two_types = {
-      "units si", "atom_style sphere", "atom_modify map array", "comm_modify vel yes"};
+  const std::vector<std::string> two_types = {"units si", "atom_style sphere",
+                                              "atom_modify map array", "comm_modify vel yes"};
   {
     Lammps lmp;
     lmp.cmds(two_types);
-    lmp.cmds({"read_data " + poly + " extra/atom/types 1 nocoeff", "set type 1 type/fraction 2 0.5 77",
-              "neighbor 0.2e-3 bin", "timestep 1.0e-7"});
+    lmp.cmds({"read_data " + poly + " extra/atom/types 1 nocoeff",
+              "set type 1 type/fraction 2 0.5 77", "neighbor 0.2e-3 bin", "timestep 1.0e-7"});
     lmp.cmds(pair);
     drive(lmp);
     lmp.cmds({"run 200", "write_data " + data + " pair ij"});
@@ -363,13 +432,13 @@ TEST_F(Packings, SingleReproducesForcesAndTorques)
   lmp.cmds({"run 1000", "compute pl all pair/local dist dx dy dz p1 p2 p3 p5 p6 p7 p9 p11",
             "compute ids all property/local patom1 patom2", "run 0"});
   const int n = lmp.natoms();
-  const int nrows = (int) *(int *) lammps_extract_compute(lmp.handle, "pl", LMP_STYLE_LOCAL,
-                                                          LMP_SIZE_ROWS);
+  const int nrows =
+      (int) *(int *) lammps_extract_compute(lmp.handle, "pl", LMP_STYLE_LOCAL, LMP_SIZE_ROWS);
   auto pl = (double **) lammps_extract_compute(lmp.handle, "pl", LMP_STYLE_LOCAL, LMP_TYPE_ARRAY);
   auto ids = (double **) lammps_extract_compute(lmp.handle, "ids", LMP_STYLE_LOCAL, LMP_TYPE_ARRAY);
   ASSERT_GT(nrows, n);
-  ASSERT_EQ(nrows, *(int *) lammps_extract_compute(lmp.handle, "ids", LMP_STYLE_LOCAL,
-                                                    LMP_SIZE_ROWS));
+  ASSERT_EQ(nrows,
+            *(int *) lammps_extract_compute(lmp.handle, "ids", LMP_STYLE_LOCAL, LMP_SIZE_ROWS));
   const auto radius = (double *) lammps_extract_atom(lmp.handle, "radius");
   const auto tag = (int *) lammps_extract_atom(lmp.handle, "id");
   std::vector<double> rad(n + 1);
@@ -487,8 +556,8 @@ void compare_with_stock(const std::string &data, bool torsion, double reff)
     a.cmd("run " + std::to_string(nsteps));
     b.cmd("run " + std::to_string(nsteps));
     const double tol = nsteps == 0 ? 1.0e-12 : 1.0e-8;
-    const std::string tag = std::string(torsion ? "mono" : "poly") + " vs stock after " +
-        std::to_string(nsteps) + " ";
+    const std::string tag =
+        std::string(torsion ? "mono" : "poly") + " vs stock after " + std::to_string(nsteps) + " ";
     for (const char *name : {"f", "torque", "omega", "x"})
       EXPECT_LT(measured(tag + name, max_rel_diff(a.gather3(name), b.gather3(name))), tol);
   }
@@ -508,10 +577,12 @@ TEST_F(Packings, MatchesStockMonodisperseWithTorsion)
 // Bad input
 // ---------------------------------------------------------------------------
 
-
-const std::vector<std::string> sphere_box = {
-    "units si", "atom_style sphere", "region box block 0 0.01 0 0.01 0 0.01", "create_box 1 box",
-    "create_atoms 1 single 0.005 0.005 0.005", "pair_style granular/grflow"};
+const std::vector<std::string> sphere_box = {"units si",
+                                             "atom_style sphere",
+                                             "region box block 0 0.01 0 0.01 0 0.01",
+                                             "create_box 1 box",
+                                             "create_atoms 1 single 0.005 0.005 0.005",
+                                             "pair_style granular/grflow"};
 
 TEST(PairGRFLOWErrors, BadPairCoeff)
 {
@@ -551,13 +622,12 @@ TEST(PairGRFLOWErrors, BadPairStyle)
 
 TEST(PairGRFLOWErrors, NeedsSpheresAndGhostVelocities)
 {
-  std::string msg = error_after({"units si", "atom_style atomic",
-                                 "region box block 0 0.01 0 0.01 0 0.01", "create_box 1 box",
-                                 "create_atoms 1 single 0.005 0.005 0.005", "mass 1 1.0",
-                                 "pair_style granular/grflow", "pair_coeff * * 1.0e6 1.15"},
-                                "run 0");
-  EXPECT_NE(msg.find("requires atom attributes radius, rmass and omega"), std::string::npos)
-      << msg;
+  std::string msg =
+      error_after({"units si", "atom_style atomic", "region box block 0 0.01 0 0.01 0 0.01",
+                   "create_box 1 box", "create_atoms 1 single 0.005 0.005 0.005", "mass 1 1.0",
+                   "pair_style granular/grflow", "pair_coeff * * 1.0e6 1.15"},
+                  "run 0");
+  EXPECT_NE(msg.find("requires atom attributes radius, rmass and omega"), std::string::npos) << msg;
 
   std::vector<std::string> setup = sphere_box;
   setup.push_back("pair_coeff * * 1.0e6 1.15");

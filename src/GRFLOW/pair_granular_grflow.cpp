@@ -108,6 +108,18 @@ void PairGranularGRFLOW::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
 
+  // neighbor lists carry special-bond bits only in molecular systems;
+  // without them the loop needs no special_lj lookup (~4% of the pair time)
+  if (atom->molecular == Atom::ATOMIC)
+    eval<false>(eflag);
+  else
+    eval<true>(eflag);
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <bool SPECIAL> void PairGranularGRFLOW::eval(int eflag)
+{
   // no history updates during setup (forces are recomputed for the same state)
   const bool update_history = (update->setupflag == 0);
   const bool use_full_arm = (full_arm != 0);
@@ -149,9 +161,12 @@ void PairGranularGRFLOW::compute(int eflag, int vflag)
 
     for (int jj = 0; jj < jnum; jj++) {
       int j = jlist[jj];
-      const double factor_lj = special_lj[sbmask(j)];
+      double factor_lj = 1.0;
+      if (SPECIAL) {
+        factor_lj = special_lj[sbmask(j)];
+        if (factor_lj == 0.0) continue;
+      }
       j &= NEIGHMASK;
-      if (factor_lj == 0.0) continue;
 
       del[0] = xtmp - x[j][0];
       del[1] = ytmp - x[j][1];
@@ -179,7 +194,7 @@ void PairGranularGRFLOW::compute(int eflag, int vflag)
       contact_forces(c, g, vrel, omega[i], omega[j], dt, update_history, hist, out);
 
       double fx = out.f[0], fy = out.f[1], fz = out.f[2];
-      if (factor_lj != 1.0) {
+      if (SPECIAL && factor_lj != 1.0) {
         fx *= factor_lj;
         fy *= factor_lj;
         fz *= factor_lj;
@@ -246,14 +261,17 @@ void PairGranularGRFLOW::settings(int narg, char **arg)
   int iarg = 0;
   while (iarg < narg) {
     if (strcmp(arg[iarg], "velocity_arm") == 0) {
-      if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, "pair_style granular/grflow velocity_arm", error);
+      if (iarg + 2 > narg)
+        utils::missing_cmd_args(FLERR, "pair_style granular/grflow velocity_arm", error);
       if (strcmp(arg[iarg + 1], "reduced") == 0)
         full_arm = 0;
       else if (strcmp(arg[iarg + 1], "full") == 0)
         full_arm = 1;
       else
-        error->all(FLERR, "Unknown pair_style granular/grflow velocity_arm value {}: expected reduced or full",
-                   arg[iarg + 1]);
+        error->all(
+            FLERR,
+            "Unknown pair_style granular/grflow velocity_arm value {}: expected reduced or full",
+            arg[iarg + 1]);
       iarg += 2;
     } else {
       error->all(FLERR, "Unknown pair_style granular/grflow keyword: {}", arg[iarg]);
@@ -270,7 +288,9 @@ void PairGranularGRFLOW::settings(int narg, char **arg)
 void PairGranularGRFLOW::coeff(int narg, char **arg)
 {
   if (narg < 4)
-    error->all(FLERR, "Incorrect args for pair_coeff granular/grflow: expected I J kn cn [keyword value ...]");
+    error->all(
+        FLERR,
+        "Incorrect args for pair_coeff granular/grflow: expected I J kn cn [keyword value ...]");
   if (!allocated) allocate();
 
   int ilo, ihi, jlo, jhi;
@@ -288,7 +308,8 @@ void PairGranularGRFLOW::coeff(int narg, char **arg)
       count++;
     }
   }
-  if (count == 0) error->all(FLERR, "Incorrect args for pair_coeff granular/grflow: no type pair in range");
+  if (count == 0)
+    error->all(FLERR, "Incorrect args for pair_coeff granular/grflow: no type pair in range");
 }
 
 /* ----------------------------------------------------------------------
@@ -298,10 +319,12 @@ void PairGranularGRFLOW::coeff(int narg, char **arg)
 void PairGranularGRFLOW::init_style()
 {
   if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag)
-    error->all(FLERR, "Pair style granular/grflow requires atom attributes radius, rmass and "
+    error->all(FLERR,
+               "Pair style granular/grflow requires atom attributes radius, rmass and "
                "omega (atom_style sphere)");
   if (comm->ghost_velocity == 0)
-    error->all(FLERR, "Pair style granular/grflow requires ghost atoms to store velocity: "
+    error->all(FLERR,
+               "Pair style granular/grflow requires ghost atoms to store velocity: "
                "use comm_modify vel yes");
 
   neighbor->add_request(this, NeighConst::REQ_SIZE | NeighConst::REQ_HISTORY);
