@@ -108,17 +108,42 @@ void PairGranularGRFLOW::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
 
-  // neighbor lists carry special-bond bits only in molecular systems;
-  // without them the loop needs no special_lj lookup (~4% of the pair time)
-  if (atom->molecular == Atom::ATOMIC)
-    eval<false>(eflag);
-  else
-    eval<true>(eflag);
+  // the pair loop is compiled for each combination of energy/virial
+  // tallying, newton_pair and special bonds (as in the OPT package), so the
+  // loop carries no tests of them; neighbor lists carry special-bond bits
+  // only in molecular systems, without them no special_lj lookup is needed
+  // (together about 10% of the pair time, bench/README.md)
+  const bool special = (atom->molecular != Atom::ATOMIC);
+  if (evflag) {
+    if (force->newton_pair) {
+      if (special)
+        eval<1, 1, 1>(eflag);
+      else
+        eval<1, 1, 0>(eflag);
+    } else {
+      if (special)
+        eval<1, 0, 1>(eflag);
+      else
+        eval<1, 0, 0>(eflag);
+    }
+  } else {
+    if (force->newton_pair) {
+      if (special)
+        eval<0, 1, 1>(eflag);
+      else
+        eval<0, 1, 0>(eflag);
+    } else {
+      if (special)
+        eval<0, 0, 1>(eflag);
+      else
+        eval<0, 0, 0>(eflag);
+    }
+  }
 }
 
 /* ---------------------------------------------------------------------- */
 
-template <bool SPECIAL> void PairGranularGRFLOW::eval(int eflag)
+template <int EVFLAG, int NEWTON_PAIR, int SPECIAL> void PairGranularGRFLOW::eval(int eflag)
 {
   // no history updates during setup (forces are recomputed for the same state)
   const bool update_history = (update->setupflag == 0);
@@ -132,7 +157,6 @@ template <bool SPECIAL> void PairGranularGRFLOW::eval(int eflag)
   const double *radius = atom->radius;
   const int *type = atom->type;
   const int nlocal = atom->nlocal;
-  const int newton_pair = force->newton_pair;
   const double *special_lj = force->special_lj;
 
   const int inum = list->inum;
@@ -211,7 +235,7 @@ template <bool SPECIAL> void PairGranularGRFLOW::eval(int eflag)
       torque[i][1] += out.torque_i[1];
       torque[i][2] += out.torque_i[2];
 
-      if (newton_pair || j < nlocal) {
+      if (NEWTON_PAIR || j < nlocal) {
         f[j][0] -= fx;
         f[j][1] -= fy;
         f[j][2] -= fz;
@@ -220,9 +244,9 @@ template <bool SPECIAL> void PairGranularGRFLOW::eval(int eflag)
         torque[j][2] += out.torque_j[2];
       }
 
-      if (evflag) {
+      if (EVFLAG) {
         if (eflag) evdwl = factor_lj * elastic_energy(c, g.delta, hist);
-        ev_tally_xyz(i, j, nlocal, newton_pair, evdwl, 0.0, fx, fy, fz, del[0], del[1], del[2]);
+        ev_tally_xyz(i, j, nlocal, NEWTON_PAIR, evdwl, 0.0, fx, fy, fz, del[0], del[1], del[2]);
       }
     }
   }

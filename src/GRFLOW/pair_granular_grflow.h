@@ -66,7 +66,7 @@ class PairGranularGRFLOW : public Pair {
   int neighprev;    // search start for single()
 
   void allocate();
-  template <bool SPECIAL> void eval(int);
+  template <int EVFLAG, int NEWTON_PAIR, int SPECIAL> void eval(int);
   void write_coeffs(FILE *, int, int, bool);
   void find_history(int, int, double *);
 };
