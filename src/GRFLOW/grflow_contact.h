@@ -25,6 +25,7 @@
 #ifndef LMP_GRFLOW_CONTACT_H
 #define LMP_GRFLOW_CONTACT_H
 
+#include <cfloat>
 #include <cmath>
 
 // the kernel is called once per neighbor pair: it must be inlined into the
@@ -107,7 +108,7 @@ namespace GRFLOW {
     const double p2 = p * p;
     double proj[3] = {xi[0] - p * n[0], xi[1] - p * n[1], xi[2] - p * n[2]};
     double s;
-    if (p2 < 1.0e-6 * len2) {
+    if (p2 <= 1.0e-6 * len2) {
       const double q = p2 / len2;
       s = 1.0 + q * (0.5 + 0.375 * q);
     } else {
@@ -317,10 +318,7 @@ namespace GRFLOW {
     const vec2 p = x[0] * n[0] + x[1] * n[1] + x[2] * n[2];
     const vec2 len2 = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
     const vec2 p2 = p * p;
-    const vec2 zero = {0.0, 0.0};
-    const mask2 keep = (p == zero);
-    const mask2 small = (p2 < 1.0e-6 * len2);
-    if (any2(~keep & ~small)) {
+    if (any2(p2 > 1.0e-6 * len2)) {
       for (int lane = 0; lane < 2; lane++) {
         double xi[3] = {x[0][lane], x[1][lane], x[2][lane]};
         rotate_into_plane(xi, n);
@@ -328,10 +326,10 @@ namespace GRFLOW {
       }
       return;
     }
-    const vec2 one = {1.0, 1.0};
-    const vec2 q = p2 / select2(keep, one, len2);
+    // an empty spring (len2 = 0) gets q = 0; len2 + DBL_MIN = len2 otherwise
+    const vec2 q = p2 / (len2 + DBL_MIN);
     const vec2 s = 1.0 + q * (0.5 + 0.375 * q);
-    for (int k = 0; k < 3; k++) x[k] = select2(keep, x[k], (x[k] - p * n[k]) * s);
+    for (int k = 0; k < 3; k++) x[k] = (x[k] - p * n[k]) * s;
   }
 
   // spring_dashpot_capped() on both lanes: k, c, cap per lane; f gets the forces
