@@ -198,11 +198,35 @@ def test_kill_and_resume_gives_one_series(protocol, tmp_path):
     assert "GRFLOW shear: resuming at step" in (killed / "log.shear.lammps").read_text()
 
 
+def test_agitation_keeps_density_lowers_coordination(tmp_path):
+    """Stage 2b (inputs/agitate.lmp): after the mu_prep compression, a
+    dilation, agitation and recompression with mu_rec give about the same
+    void ratio with clearly fewer contacts; without it (agitate_dilation 1)
+    the mu_prep packing is kept."""
+    common = dict(preset="quick", N=500, mu_prep=0.0407, stage="prep")
+    states = {}
+    for name, dil in (("plain", 1.0), ("agitated", 1.003)):
+        out = tmp_path / name
+        run(out, agitate_dilation=dil, mu_rec=0.25, **common)
+        prep = json.loads((out / "prep.json").read_text())
+        assert prep["agitate_dilation"] == dil and prep["mu_rec"] == 0.25
+        log = (out / "log.prep.lammps").read_text()
+        assert ("recompressed with mu_rec" in log) == (dil > 1.0)
+        states[name] = prep
+    plain, agitated = states["plain"], states["agitated"]
+    print(f"[ measured ] N = 500: plain e = {plain['e']:.4f}, z_g = {plain['z_g']:.3f}; "
+          f"agitated (1.003, mu_rec 0.25) e = {agitated['e']:.4f}, z_g = {agitated['z_g']:.3f}")
+    assert abs(agitated["e"] - plain["e"]) < 0.02
+    assert agitated["z_g"] < plain["z_g"] - 0.5
+    assert abs(agitated["p"] - 1.0e5) < 0.15e5
+
+
 @pytest.mark.parametrize("var,expect", [
     ({"preset": "fast"}, "unknown preset fast"),
     ({"stage": "both"}, "unknown stage both"),
     ({"pair": "hertz"}, "unknown pair hertz"),
     ({"resume": "yes", "stage": "prep"}, "cannot go with stage prep"),
+    ({"agitate_dilation": "0.99"}, "agitate_dilation 0.99 must be >= 1"),
 ])
 def test_bad_parameters(tmp_path, var, expect):
     proc = subprocess.run(lmp_cmd(tmp_path / "bad", screen=True, **var), capture_output=True,
