@@ -310,6 +310,15 @@ namespace GRFLOW {
     return (m[0] | m[1]) != 0;
   }
 
+  static GRFLOW_INLINE vec2 sqrt2(vec2 a)
+  {
+#if defined(__SSE2__)
+    return __builtin_ia32_sqrtpd(a);    // one sqrtpd (x86-64)
+#else
+    return vec2{sqrt(a[0]), sqrt(a[1])};
+#endif
+  }
+
   // rotate both springs into the plane normal to n (rotate_into_plane() per
   // lane); a lane with a large turn takes the scalar path
 
@@ -343,7 +352,7 @@ namespace GRFLOW {
     const vec2 f2 = f[0] * f[0] + f[1] * f[1] + f[2] * f[2];
     const mask2 slip = (f2 > cap * cap);
     {
-      const vec2 s = cap / __builtin_ia32_sqrtpd(f2);
+      const vec2 s = cap / sqrt2(f2);
       // a slipping spring restarts at the length that gives the capped
       // force; with k = 0 there is no spring (kinv = 0 gives x = 0)
       const vec2 zero = {0.0, 0.0};
