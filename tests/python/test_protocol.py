@@ -137,6 +137,33 @@ def test_whole_protocol_reaches_liquefaction(protocol):
     assert glue.count(2.0) == prep["glued_top"] > 0
 
 
+def test_sizes_follow_the_papers_distribution(protocol):
+    # number ~ d^-3 on [d_min, d_max] = [1, 2] mm: cumulative distribution
+    # F(d) = (1 - d^-2) / (1 - 1/4) (d in mm), number-mean 4/3 mm, median
+    # 1/sqrt(0.625) = 1.2649 mm.  (A draw with d^3 uniform instead, number
+    # ~ d^2, has mean 1.61 mm and 20% of the spheres below that median.)
+    out, _ = protocol
+    cols, atoms = read_dump(out / "snapshots/atoms.prep.txt", "ATOMS")
+    d = sorted(2e3 * a[cols.index("radius")] for a in atoms)    # mm
+    n = len(d)
+    assert n == 500
+    assert 1.0 - 1e-9 <= d[0] and d[-1] <= 2.0 + 1e-9
+    mean = sum(d) / n
+    below = sum(1 for x in d if x < 1.0 / 0.625 ** 0.5) / n
+    # Kolmogorov-Smirnov distance to F
+    ks = max(max(abs((k + 1) / n - F), abs(k / n - F))
+             for k, F in ((k, (1.0 - x ** -2) / 0.75) for k, x in enumerate(d)))
+    print(f"[ measured ] {n} diameters: mean {mean:.4f} mm (4/3), "
+          f"fraction below the median {below:.3f} (0.5), KS distance {ks:.4f}")
+    # standard error of the mean: 0.266 mm / sqrt(500) = 0.012 mm
+    assert mean == pytest.approx(4.0 / 3.0, abs=0.05)
+    assert below == pytest.approx(0.5, abs=0.08)
+    # KS critical value at the 0.1% level for n = 500: 1.95 / sqrt(n) = 0.087
+    assert ks < 0.087
+    prep = json.loads((out / "prep.json").read_text())
+    assert prep["d_mean"] == pytest.approx(4.0 / 3.0 * 1e-3, rel=1e-9)
+
+
 def test_kill_and_resume_gives_one_series(protocol, tmp_path):
     src, _ = protocol
     # shear stage only, from the prepared sample, over a fixed horizon
