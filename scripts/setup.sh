@@ -25,10 +25,12 @@ prefix=$(sed -n 's/^CMAKE_INSTALL_PREFIX:PATH=//p' "$build/CMakeCache.txt")
 export PATH="$prefix/bin:$PATH"
 lmp=$(command -v lmp)
 echo "lmp: $lmp"
-"$lmp" -h | grep -q "granular/grflow" || { echo "ERROR: $lmp lacks granular/grflow"; exit 1; }
+# (grep without -q reads to the end: with -q it may exit first, lmp then gets
+# SIGPIPE and pipefail fails the check at random)
+"$lmp" -h | grep "granular/grflow" > /dev/null || { echo "ERROR: $lmp lacks granular/grflow"; exit 1; }
 plugin=$prefix/lib/lammps/plugins/grflowplugin.so
 printf 'plugin load %s\nplugin list\n' "$plugin" | "$lmp" -log none -nocite 2>&1 \
-  | grep -q "pair style plugin granular/grflow" || { echo "ERROR: cannot load $plugin"; exit 1; }
+  | grep "pair style plugin granular/grflow" > /dev/null || { echo "ERROR: cannot load $plugin"; exit 1; }
 echo "plugin: $plugin"
 pydir=$(sed -n 's/^GRFLOW_PYTHON_INSTALL_DIR:STRING=//p' "$build/CMakeCache.txt")
 PYTHONPATH="$prefix/$pydir${PYTHONPATH:+:$PYTHONPATH}" /usr/bin/python3 -c \
