@@ -21,8 +21,10 @@
    fix group, and the two walls of a fix grflow/wall move in z.  A
    proportional stress servo sets the three strain rates from the
    stresses of a compute grflow/network, so that sigma_xx, sigma_yy and
-   sigma_zz go to a target and stay there.  Reports the stresses, the
-   kinetic-to-elastic energy ratio and a convergence flag.
+   sigma_zz go to a target and stay there.  An axis whose stress keeps
+   overshooting the target from one update to the next gets its gain
+   halved.  Reports the stresses, the kinetic-to-elastic energy ratio and
+   a convergence flag.
 ------------------------------------------------------------------------- */
 
 #include "fix_grflow_compress.h"
@@ -47,7 +49,15 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
-static constexpr int NRESTART = 4;    // rates x y z, started
+// restart: rates x y z, started, gain factors x y z, last errors x y z,
+// overshoot counts x y z
+static constexpr int NRESTART = 13;
+
+// overshoot damping: after NOVERSHOOT updates in a row, each of which
+// overshoots the target by more than half the previous error, an axis's
+// gain is halved, down to FACTOR_MIN
+static constexpr int NOVERSHOOT = 4;
+static constexpr double FACTOR_MIN = 1.0 / 1024.0;
 
 /* ---------------------------------------------------------------------- */
 
@@ -129,8 +139,11 @@ FixGRFLOWCompress::FixGRFLOWCompress(LAMMPS *lmp, int narg, char **arg) :
     pe = modify->add_compute(fmt::format("{} all pe", id_pe));
   }
 
-  rate[0] = rate[1] = rate[2] = 0.0;
-  sigma[0] = sigma[1] = sigma[2] = 0.0;
+  for (int a = 0; a < 3; a++) {
+    rate[a] = sigma[a] = err_last[a] = 0.0;
+    factor[a] = 1.0;
+    novershoot[a] = 0;
+  }
   errmax = ke = eel = 0.0;
   vsolid = 0.0;
   started = 0;
@@ -231,7 +244,8 @@ void FixGRFLOWCompress::servo()
   for (int a = 0; a < 3; a++) {
     const double err = (sigma[a] - p_target) / p_target;
     errmax = MAX(errmax, fabs(err));
-    rate[a] = rate_max * MAX(-1.0, MIN(1.0, gain * err));
+    damp_overshoot(a, err);
+    rate[a] = rate_max * MAX(-1.0, MIN(1.0, factor[a] * gain * err));
   }
 
   // kinetic energy, translational and rotational, of the fix group
@@ -259,6 +273,37 @@ void FixGRFLOWCompress::servo()
   }
 
   drive_walls();
+}
+
+/* ----------------------------------------------------------------------
+   a proportional servo updated every N steps overshoots the target when
+   the stress responds to one interval's motion by more than the error
+   (for the walls, whose contacts answer before the packing does, this
+   comes with a stiff sample, a wide gap or a large rate_max * gain * N dt);
+   at twice the error it locks into a cycle of two updates that never
+   converges.  Halve the gain of an axis after NOVERSHOOT updates in a
+   row that each land on the other side of the target with more than half
+   the previous error; a servo that converges does not trigger this.
+   Every update counts, also the one a run makes at its start on a servo
+   step: it re-measures the stresses (the dashpots then see the full-step
+   velocities) and sets the rates, and in runs of one servo interval these
+   setup updates are what alternates.
+------------------------------------------------------------------------- */
+
+void FixGRFLOWCompress::damp_overshoot(int a, double err)
+{
+  const bool overshoot =
+      fabs(err) > tol && err * err_last[a] < 0.0 && fabs(err) > 0.5 * fabs(err_last[a]);
+  novershoot[a] = overshoot ? novershoot[a] + 1 : 0;
+  err_last[a] = err;
+  if (novershoot[a] < NOVERSHOOT || factor[a] <= FACTOR_MIN) return;
+  factor[a] *= 0.5;
+  novershoot[a] = 0;
+  if (comm->me == 0)
+    error->warning(FLERR,
+                   "Fix {} grflow/compress: sigma_{}{} overshot the target {} servo updates in "
+                   "a row at step {}; its gain factor is halved to {}",
+                   id, "xyz"[a], "xyz"[a], NOVERSHOOT, update->ntimestep, factor[a]);
 }
 
 /* ----------------------------------------------------------------------
@@ -342,6 +387,10 @@ double FixGRFLOWCompress::compute_vector(int n)
       return domain->yprd;
     case HEIGHT:
       return h;
+    case FACTOR_X:
+    case FACTOR_Y:
+    case FACTOR_Z:
+      return factor[n - FACTOR_X];
   }
   return 0.0;
 }
@@ -351,6 +400,11 @@ double FixGRFLOWCompress::compute_vector(int n)
 void FixGRFLOWCompress::write_restart(FILE *fp)
 {
   double list[NRESTART] = {rate[0], rate[1], rate[2], (double) started};
+  for (int a = 0; a < 3; a++) {
+    list[4 + a] = factor[a];
+    list[7 + a] = err_last[a];
+    list[10 + a] = (double) novershoot[a];
+  }
   if (comm->me == 0) {
     int size = NRESTART * sizeof(double);
     fwrite(&size, sizeof(int), 1, fp);
@@ -367,4 +421,9 @@ void FixGRFLOWCompress::restart(char *buf)
   rate[1] = list[1];
   rate[2] = list[2];
   started = (int) list[3];
+  for (int a = 0; a < 3; a++) {
+    factor[a] = list[4 + a];
+    err_last[a] = list[7 + a];
+    novershoot[a] = (int) list[10 + a];
+  }
 }

@@ -40,7 +40,7 @@ class FixGRFLOWCompress : public Fix {
   // output vector (0-based)
   enum {
     CONVERGED, SXX, SYY, SZZ, ERRMAX, KE, EEL, RATIO, RATE_X, RATE_Y, RATE_Z, VOLUME, VOID,
-    LX, LY, HEIGHT, NOUT
+    LX, LY, HEIGHT, FACTOR_X, FACTOR_Y, FACTOR_Z, NOUT
   };
 
  private:
@@ -59,10 +59,16 @@ class FixGRFLOWCompress : public Fix {
   double rate[3];
   int started;
 
+  // overshoot damping (restart): per axis the gain factor, the error of
+  // the last update and the number of undamped overshoots in a row
+  double factor[3], err_last[3];
+  int novershoot[3];
+
   // last servo step
   double sigma[3], errmax, ke, eel;
 
   void servo();
+  void damp_overshoot(int, double);
   void drive_walls();
   void deform_box();
   double height() const;
