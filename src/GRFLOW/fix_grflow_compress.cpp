@@ -49,9 +49,12 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 
-// restart: rates x y z, started, gain factors x y z, last errors x y z,
-// overshoot counts x y z
+// restart: rates x y z, RESTART_V2 + started, gain factors x y z, last
+// errors x y z, overshoot counts x y z.  Files written before the
+// overshoot damping hold only the first four, with started 0 or 1: the
+// offset tells them apart (LAMMPS does not pass the size to restart()).
 static constexpr int NRESTART = 13;
+static constexpr int RESTART_V2 = 2;
 
 // overshoot damping: after NOVERSHOOT updates in a row, each of which
 // overshoots the target by more than half the previous error, an axis's
@@ -207,8 +210,10 @@ void FixGRFLOWCompress::setup(int /*vflag*/)
 {
   // update the rates where an uninterrupted run would (the very start and
   // every N-th step); otherwise keep those of the last update (they and the
-  // wall velocities are in the restart files), so that a run split at any
-  // step gives the same trajectory as one run
+  // wall velocities are in the restart files), so that a run split at a
+  // step that is not a multiple of N gives the same trajectory as one run.
+  // On a multiple of N this repeats that step's update with stresses
+  // re-measured at setup (full-step velocities in the dashpots).
   if (!started || update->ntimestep % servo_every == 0) servo();
   started = 1;
   const bigint next = (update->ntimestep / servo_every + 1) * servo_every;
@@ -228,7 +233,7 @@ void FixGRFLOWCompress::end_of_step()
 
 /* ----------------------------------------------------------------------
    stresses, energies, and new strain rates
-   rate_a = rate_max * clamp(gain * (sigma_aa - p_target) / p_target, -1, 1)
+   rate_a = rate_max * clamp(factor_a * gain * (sigma_aa - p_target) / p_target, -1, 1)
    (compression is positive, a negative rate shrinks the cell)
 ------------------------------------------------------------------------- */
 
@@ -283,7 +288,9 @@ void FixGRFLOWCompress::servo()
    at twice the error it locks into a cycle of two updates that never
    converges.  Halve the gain of an axis after NOVERSHOOT updates in a
    row that each land on the other side of the target with more than half
-   the previous error; a servo that converges does not trigger this.
+   the previous error (and beyond tol).  A servo that converges without
+   overshooting, or whose overshoots shrink by more than half each time,
+   does not trigger this.
    Every update counts, also the one a run makes at its start on a servo
    step: it re-measures the stresses (the dashpots then see the full-step
    velocities) and sets the rates, and in runs of one servo interval these
@@ -296,9 +303,10 @@ void FixGRFLOWCompress::damp_overshoot(int a, double err)
       fabs(err) > tol && err * err_last[a] < 0.0 && fabs(err) > 0.5 * fabs(err_last[a]);
   novershoot[a] = overshoot ? novershoot[a] + 1 : 0;
   err_last[a] = err;
-  if (novershoot[a] < NOVERSHOOT || factor[a] <= FACTOR_MIN) return;
-  factor[a] *= 0.5;
+  if (novershoot[a] < NOVERSHOOT) return;
   novershoot[a] = 0;
+  if (factor[a] <= FACTOR_MIN) return;
+  factor[a] *= 0.5;
   if (comm->me == 0)
     error->warning(FLERR,
                    "Fix {} grflow/compress: sigma_{}{} overshot the target {} servo updates in "
@@ -399,7 +407,7 @@ double FixGRFLOWCompress::compute_vector(int n)
 
 void FixGRFLOWCompress::write_restart(FILE *fp)
 {
-  double list[NRESTART] = {rate[0], rate[1], rate[2], (double) started};
+  double list[NRESTART] = {rate[0], rate[1], rate[2], (double) (RESTART_V2 + started)};
   for (int a = 0; a < 3; a++) {
     list[4 + a] = factor[a];
     list[7 + a] = err_last[a];
@@ -420,7 +428,9 @@ void FixGRFLOWCompress::restart(char *buf)
   rate[0] = list[0];
   rate[1] = list[1];
   rate[2] = list[2];
-  started = (int) list[3];
+  const int flag = (int) list[3];
+  started = flag % RESTART_V2;
+  if (flag < RESTART_V2) return;    // older file: no damping state, keep factors 1
   for (int a = 0; a < 3; a++) {
     factor[a] = list[4 + a];
     err_last[a] = list[7 + a];
