@@ -230,6 +230,16 @@ def test_kill_and_resume_gives_one_series(protocol, tmp_path):
     assert dp < 0.02
     assert "GRFLOW shear: resuming at step" in (killed / "log.shear.lammps").read_text()
 
+    # resuming the finished run changes nothing (it used to trim the series
+    # at the last restart file's step and run on from there)
+    series = (killed / "series.txt").read_text()
+    files = sorted(p.name for p in killed.glob("shear.restart.*"))
+    run(killed, resume="yes", **common)
+    assert (killed / "series.txt").read_text() == series
+    assert sorted(p.name for p in killed.glob("shear.restart.*")) == files
+    assert ("had finished at step 20000; nothing to resume"
+            in (killed / "log.shear.lammps").read_text())
+
 
 def test_stock_deck_runs_the_protocol(protocol, tmp_path):
     """inputs/cyclic_shear_stock.lmp: the same small protocol with stock
