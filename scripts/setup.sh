@@ -52,5 +52,5 @@ mpirun --allow-run-as-root --oversubscribe -np "$np" "$lmp" -log none -screen no
   -in inputs/cyclic_shear.lmp -var preset quick \
   || { echo "ERROR: the protocol run failed; see runs/quick/log.*.lammps"; exit 1; }
 echo "protocol done in $(( $(date +%s) - start )) s"
-grep -h "GRFLOW" runs/quick/log.prep.lammps runs/quick/log.shear.lammps | grep -v "^print" || true
+grep -h "^GRFLOW " runs/quick/log.prep.lammps runs/quick/log.shear.lammps || true
 /usr/bin/python3 analysis/make_figures.py runs/quick
