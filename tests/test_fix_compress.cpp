@@ -21,7 +21,8 @@
      target and holds them within the tolerance; the convergence flag
      follows its definition; the void ratio is V / V_solid - 1 from the box,
      the walls and the radii;
-   - a restart continues the same compression as an uninterrupted run;
+   - a restart continues the same compression as an uninterrupted run, also
+     from a file written before the overshoot damping (4 values of state);
    - bad input gives a clear error.
 ------------------------------------------------------------------------- */
 
@@ -53,6 +54,18 @@ void cell(Lammps &lmp)
 }
 
 std::vector<double> comp(Lammps &lmp) { return lmp.fix_vector("cmp", NCOMP); }
+
+// the cell of a restart file, with the commands a restart does not keep
+// (the wall fix and fix cmp are re-specified and take their state from it)
+void resume_cell(Lammps &lmp, const std::string &file)
+{
+  lmp.cmds({"read_restart " + file, "comm_modify vel yes", "neighbor 0.2e-3 bin",
+            "neigh_modify delay 0 every 1 check yes",
+            "fix w all grflow/wall 1.0e6 1.15 mut 0.1 zlo 0 zhi 1", "variable zlo equal f_w[4]",
+            "variable zhi equal f_w[10]",
+            "compute net all grflow/network zlimits v_zlo v_zhi slab 1.0",
+            "fix nve all nve/sphere", compress_cmd()});
+}
 
 }    // namespace
 
@@ -272,12 +285,8 @@ TEST(Compress, RestartContinues)
   }
   {
     Lammps lmp;
-    lmp.cmds({"read_restart " + file, "comm_modify vel yes", "neighbor 0.2e-3 bin",
-              "neigh_modify delay 0 every 1 check yes",
-              "fix w all grflow/wall 1.0e6 1.15 mut 0.1 zlo 0 zhi 1", "variable zlo equal f_w[4]",
-              "variable zhi equal f_w[10]",
-              "compute net all grflow/network zlimits v_zlo v_zhi slab 1.0",
-              "fix nve all nve/sphere", compress_cmd(), "run 20000 post no"});
+    resume_cell(lmp, file);
+    lmp.cmd("run 20000 post no");
     got = comp(lmp);
     got.push_back(lmp.thermo("lx"));
   }
@@ -289,6 +298,48 @@ TEST(Compress, RestartContinues)
   measured("restart: relative difference of sigma_zz after 20000 steps",
            fabs(got[SZZ] / ref[SZZ] - 1.0));
   measured("restart: relative difference of Lx", fabs(got[NCOMP] / ref[NCOMP] - 1.0));
+}
+
+TEST(Compress, ReadsRestartWithoutDampingState)
+{
+  // compress_v1.restart was written by GRFLOW before the overshoot damping
+  // (tests/decks/make_compress_v1_restart.lmp): its fix cmp state is the 4
+  // values rates x y z and started.  Read now, it must give gain factors 1
+  // and the same compression as a run that never stopped: at gain 5 the
+  // damping never triggers, so both builds compute the same trajectory.
+  std::vector<double> ref_start, ref, got_start, got;
+  {
+    Lammps lmp;
+    cell(lmp);
+    lmp.cmds({compress_cmd(), "run 150005 post no"});
+    ref_start = comp(lmp);
+    lmp.cmd("run 20000 post no");
+    ref = comp(lmp);
+  }
+  {
+    Lammps lmp;
+    resume_cell(lmp, deck("compress_v1.restart"));
+    ASSERT_EQ((long) lmp.thermo("step"), 150005L);
+    got_start = comp(lmp);
+    lmp.cmd("run 20000 post no");
+    got = comp(lmp);
+  }
+  for (int k : {FACTOR_X, FACTOR_Y, FACTOR_Z}) {
+    EXPECT_EQ(got_start[k], 1.0) << "entry " << k;
+    EXPECT_EQ(got[k], 1.0) << "entry " << k;
+  }
+  // the rates written by the old build are those of the uninterrupted run
+  for (int k : {RATE_X, RATE_Y, RATE_Z}) {
+    const double d = fabs(got_start[k] - ref_start[k]) / std::max(fabs(ref_start[k]), 1e-300);
+    EXPECT_LT(d, 1e-9) << "entry " << k << ": " << got_start[k] << " vs " << ref_start[k];
+  }
+  EXPECT_NE(got_start[RATE_Z], 0.0) << "the file should hold a compression under way";
+  for (int k : {SXX, SYY, SZZ, RATE_X, RATE_Z, VOLUME, HEIGHT}) {
+    const double d = fabs(got[k] - ref[k]) / std::max(fabs(ref[k]), 1e-300);
+    EXPECT_LT(d, 1e-6) << "entry " << k << ": " << got[k] << " vs " << ref[k];
+  }
+  measured("old restart: relative difference of sigma_zz after 20000 steps",
+           fabs(got[SZZ] / ref[SZZ] - 1.0));
 }
 
 TEST(Compress, ElasticEnergyFromAVariable)
