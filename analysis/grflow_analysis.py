@@ -245,12 +245,72 @@ def read_dump_atoms(path):
 
 
 def read_dump_local(path):
-    """Read ``snapshots/contacts.*.txt``; columns id1, id2, fn required."""
+    """Read ``snapshots/contacts.*.txt``; columns id1, id2, dx, dy, dz, fn required."""
     d = read_dump(path)
-    need = ("id1", "id2", "fn")
+    need = ("id1", "id2", "dx", "dy", "dz", "fn")
     if d["item"] != "ENTRIES" or any(n not in d["columns"] for n in need):
         raise FormatError("%s: expected ITEM: ENTRIES with %s" % (path, " ".join(need)))
     return d
+
+
+def network_from_snapshot(atoms, contacts, zlo, zhi, slab=0.8, cmax=12, stress=None):
+    """Contact network of a snapshot, recomputed offline as compute grflow/network does.
+
+    ``atoms`` and ``contacts`` are the dicts of :func:`read_dump_atoms` and
+    :func:`read_dump_local` of one step; ``zlo``/``zhi`` the wall positions
+    (series columns of that step).  The sub-volume is the decks' (compute
+    ``net``: ``zlimits v_zlo v_zhi slab 0.8``, group ``free``): particles with
+    glue 0 whose centre z is in [zmid - slab h/2, zmid + slab h/2).  A
+    contact is an entry with fn > 0; entries with fn <= 0 (overlapping but
+    separating, doc/compute_grflow_network.rst) are left out.  Each end of a
+    contact that belongs to a particle inside counts for that particle and
+    adds n n to the fabric.  A particle inside that overlaps a wall plane
+    is counted as touching that wall (the wall forces are not dumped; in the
+    decks' central slab no particle inside can reach a wall).
+
+    Returns a dict: ``N_p``, ``floaters``, ``N_c``, ``z_g``, ``z``, ``P``
+    (P_0 .. P_cmax, the last for cmax or more contacts), ``a`` (the 3x3
+    fabric anisotropy tensor 15/2 (F - I/3)), ``a_abs`` (sqrt(3/2 a:a)) and,
+    if ``stress`` (sxx syy szz sxy sxz syz, the series columns) is given,
+    ``a_c`` with the sign of a:s, s the deviator of the symmetric stress.
+    """
+    ac, cc = atoms["columns"], contacts["columns"]
+    ids = ac["id"].astype(np.int64)
+    z, rad = ac["z"], ac["radius"]
+    half = 0.5 * slab * (zhi - zlo)
+    zmid = 0.5 * (zlo + zhi)
+    inside = (ac["glue"] == 0) & (z >= zmid - half) & (z < zmid + half)
+    index = {int(i): k for k, i in enumerate(ids)}
+    ncont = np.zeros(len(ids), dtype=np.int64)
+    fab = np.zeros((3, 3))
+    keep = cc["fn"] > 0.0
+    for i1, i2, dx, dy, dz in zip(cc["id1"][keep], cc["id2"][keep], cc["dx"][keep],
+                                  cc["dy"][keep], cc["dz"][keep]):
+        ends = 0
+        for i in (index[int(i1)], index[int(i2)]):
+            if inside[i]:
+                ncont[i] += 1
+                ends += 1
+        if ends:
+            n = np.array([dx, dy, dz]) / math.sqrt(dx * dx + dy * dy + dz * dz)
+            fab += ends * np.outer(n, n)
+    for wall in (inside & (z - rad < zlo), inside & (z + rad > zhi)):
+        ncont[wall] += 1
+        fab[2, 2] += np.count_nonzero(wall)
+    c = ncont[inside]
+    n_p, floaters, csum = len(c), int(np.count_nonzero(c == 0)), int(c.sum())
+    P = np.bincount(np.minimum(c, cmax), minlength=cmax + 1)[:cmax + 1] / max(n_p, 1)
+    a = 7.5 * (fab / csum - np.eye(3) / 3.0) if csum else np.zeros((3, 3))
+    out = {"N_p": n_p, "floaters": floaters, "N_c": 0.5 * csum,
+           "z_g": csum / (n_p - floaters) if n_p > floaters else 0.0,
+           "z": csum / n_p if n_p else 0.0, "P": P, "a": a,
+           "a_abs": math.sqrt(1.5 * float(np.sum(a * a)))}
+    if stress is not None:
+        sxx, syy, szz, sxy, sxz, syz = stress
+        sig = np.array([[sxx, sxy, sxz], [sxy, syy, syz], [sxz, syz, szz]])
+        dev = sig - np.trace(sig) / 3.0 * np.eye(3)
+        out["a_c"] = out["a_abs"] if np.sum(a * dev) >= 0.0 else -out["a_abs"]
+    return out
 
 
 def list_snapshots(run_dir, kind="atoms"):

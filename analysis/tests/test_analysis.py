@@ -241,6 +241,41 @@ def test_read_dumps(liquefied_run):
 
 # ------------------------------------------------------------ cycles
 
+def test_network_from_snapshot_by_hand():
+    # six particles between walls at z = 0 and 10 (slab 0.8: z in [1, 9)):
+    # 1-4 free and inside, 5 glued, 6 free but outside the slab.
+    # Contacts: 1-2 along z, 2-3 along x, 1-5 along z (glued: only 1's end),
+    # 3-6 along y (only 3's end), 3-4 with fn = 0 (not a contact), so
+    # c = 2, 2, 2, 0: N_p 4, one floater, N_c = 6/2, z_g = 6/3, and the
+    # ends in the fabric are 3 along z, 2 along x, 1 along y.
+    atoms = {"columns": {"id": np.array([1, 2, 3, 4, 5, 6.0]),
+                         "radius": np.full(6, 0.5),
+                         "z": np.array([5.0, 6.0, 6.0, 3.0, 4.0, 9.5]),
+                         "glue": np.array([0, 0, 0, 0, 1, 0.0])}}
+    pairs = [(1, 2, 0, 0, -1, 5.0), (2, 3, 1, 0, 0, 2.0), (5, 1, 0, 0, -1, 1.0),
+             (6, 3, 0, -1, 0, 0.5), (3, 4, 0.9, 0, 0, 0.0)]
+    names = ("id1", "id2", "dx", "dy", "dz", "fn")
+    contacts = {"columns": {n: np.array([p[k] for p in pairs], dtype=float)
+                            for k, n in enumerate(names)}}
+    net = ga.network_from_snapshot(atoms, contacts, 0.0, 10.0, slab=0.8, cmax=4,
+                                   stress=[1.0, 1.0, 4.0, 0.0, 0.0, 0.0])
+    assert (net["N_p"], net["floaters"], net["N_c"]) == (4, 1, 3.0)
+    assert net["z_g"] == pytest.approx(2.0)
+    assert net["z"] == pytest.approx(1.5)
+    assert list(net["P"]) == pytest.approx([0.25, 0.0, 0.75, 0.0, 0.0])
+    a = 7.5 * (np.diag([2.0, 1.0, 3.0]) / 6.0 - np.eye(3) / 3.0)
+    assert net["a"] == pytest.approx(a)
+    assert net["a_c"] == pytest.approx(math.sqrt(1.5 * np.sum(a * a)))   # along z, as s
+    net = ga.network_from_snapshot(atoms, contacts, 0.0, 10.0, slab=0.8, cmax=4,
+                                   stress=[4.0, 4.0, 1.0, 0.0, 0.0, 0.0])
+    assert net["a_c"] < 0.0
+    # a particle inside that overlaps a wall touches it: 4 at z 0.4 -> slab
+    # 1.0 makes it inside and in contact with the bottom wall (along z)
+    atoms["columns"]["z"][3] = 0.4
+    net = ga.network_from_snapshot(atoms, contacts, 0.0, 10.0, slab=1.0, cmax=4)
+    assert (net["N_p"], net["floaters"], net["N_c"]) == (5, 0, 4.0)
+
+
 def test_cycle_count_matches_construction(liquefied_run):
     root, col, Ns, Nf = liquefied_run
     s = ga.read_series(os.path.join(root, "series.txt"))
