@@ -17,6 +17,7 @@ import json
 import os
 import signal
 import subprocess
+import sys
 import time
 
 import pytest
@@ -26,6 +27,7 @@ from lmprun import LMP
 INPUTS = os.environ.get("GRFLOW_INPUTS",
                         os.path.join(os.path.dirname(__file__), "..", "..", "inputs"))
 DECK = os.path.join(INPUTS, "cyclic_shear.lmp")
+ANALYSIS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "analysis")
 STOCK_DECK = os.path.join(INPUTS, "cyclic_shear_stock.lmp")
 COLUMNS = ("step time reversals direction x_w gamma tau p r_u z_g a_c N_c N_p floaters "
            "sxx syy szz sxy sxz syz zlo zhi inertial " +
@@ -136,6 +138,49 @@ def test_whole_protocol_reaches_liquefaction(protocol):
     glue = [a[-1] for a in atoms]
     assert glue.count(1.0) == prep["glued_bottom"] > 0
     assert glue.count(2.0) == prep["glued_top"] > 0
+
+
+def check_snapshots_against_series(out):
+    """A step's atoms and contacts snapshots are enough to recompute the
+    contact network offline: on every snapshot step that has a series row,
+    analysis/network_from_snapshot (Python, from the dumps) gives the
+    compute's N_p, floaters, N_c, z_g, P_c and a_c (C++, in the run).
+    Returns the number of steps compared and of fn = 0 entries left out."""
+    sys.path.insert(0, ANALYSIS)
+    import grflow_analysis as ga
+    series = ga.read_series(str(out / "series.txt"))
+    row_of = {int(s): k for k, s in enumerate(series["step"])}
+    compared = dropped = 0
+    for step, path in ga.list_snapshots(str(out), "contacts"):
+        k = row_of.get(step)
+        if k is None:
+            continue
+        atoms = ga.read_dump_atoms(str(out / "snapshots" / f"atoms.{step}.txt"))
+        contacts = ga.read_dump_local(path)
+        assert atoms["step"] == contacts["step"] == step
+        stress = [series[c][k] for c in ("sxx", "syy", "szz", "sxy", "sxz", "syz")]
+        net = ga.network_from_snapshot(atoms, contacts, series["zlo"][k], series["zhi"][k],
+                                       stress=stress)
+        where = f"{out.name} step {step}"
+        # counts exactly; the rest to the digits of series.txt (z_g and a_c
+        # %.8g, P_c %.6g) and of the dumps (%g: branch vectors to 6 digits)
+        assert net["N_p"] == series["N_p"][k], where
+        assert net["floaters"] == series["floaters"][k], where
+        assert net["N_c"] == series["N_c"][k], where
+        assert net["z_g"] == pytest.approx(series["z_g"][k], rel=1e-7), where
+        for c in range(13):
+            assert net["P"][c] == pytest.approx(series[f"P{c}"][k], abs=1e-6), (where, c)
+        assert net["a_c"] == pytest.approx(series["a_c"][k], abs=1e-5), where
+        dropped += int((contacts["columns"]["fn"] <= 0.0).sum())
+        compared += 1
+    print(f"[ measured ] {out.name}: offline network = series on {compared} snapshot steps "
+          f"({dropped} overlapping entries with fn = 0 left out)")
+    return compared, dropped
+
+
+def test_snapshots_hold_the_series_network(protocol):
+    compared, _ = check_snapshots_against_series(protocol[0])
+    assert compared >= 3
 
 
 def test_sizes_follow_the_papers_distribution(protocol):
@@ -269,6 +314,9 @@ def test_stock_deck_runs_the_protocol(protocol, tmp_path):
     assert abs(prep["z_g"] - ref["z_g"]) < 0.3
     assert ru_max >= 0.99
     assert "GRFLOW shear: done" in (out / "log.shear.lammps").read_text()
+    # its contacts snapshots carry the normal force too (pair/local p11 is
+    # not f_n in stock pair granular)
+    assert check_snapshots_against_series(out)[0] >= 3
 
 
 def test_agitation_keeps_density_lowers_coordination(tmp_path):
