@@ -57,14 +57,14 @@ std::vector<double> comp(Lammps &lmp) { return lmp.fix_vector("cmp", NCOMP); }
 
 // the cell of a restart file, with the commands a restart does not keep
 // (the wall fix and fix cmp are re-specified and take their state from it)
-void resume_cell(Lammps &lmp, const std::string &file)
+void resume_cell(Lammps &lmp, const std::string &file, const std::string &extra = "")
 {
   lmp.cmds({"read_restart " + file, "comm_modify vel yes", "neighbor 0.2e-3 bin",
             "neigh_modify delay 0 every 1 check yes",
             "fix w all grflow/wall 1.0e6 1.15 mut 0.1 zlo 0 zhi 1", "variable zlo equal f_w[4]",
             "variable zhi equal f_w[10]",
             "compute net all grflow/network zlimits v_zlo v_zhi slab 1.0",
-            "fix nve all nve/sphere", compress_cmd()});
+            "fix nve all nve/sphere", compress_cmd(extra)});
 }
 
 }    // namespace
@@ -286,6 +286,21 @@ TEST(Compress, RestartContinues)
   {
     Lammps lmp;
     resume_cell(lmp, file);
+    // between servo steps the rates are kept, and the outputs re-measured
+    lmp.cmd("run 0 post no");
+    const auto c0 = comp(lmp);
+    const auto *net = (double *) lammps_extract_compute(lmp.handle, "net", LMP_STYLE_GLOBAL,
+                                                        LMP_TYPE_VECTOR);
+    ASSERT_NE(net, nullptr);
+    double errmax = 0.0;
+    for (int a = 0; a < 3; a++) {
+      EXPECT_EQ(c0[SXX + a], net[a]) << "sigma " << a;
+      errmax = std::max(errmax, fabs(net[a] - PT) / PT);
+    }
+    EXPECT_GT(c0[SZZ], 0.0);
+    EXPECT_EQ(c0[ERRMAX], errmax);
+    EXPECT_GT(c0[KE], 0.0);
+    EXPECT_GT(c0[EEL], 0.0);
     lmp.cmd("run 20000 post no");
     got = comp(lmp);
     got.push_back(lmp.thermo("lx"));
@@ -367,6 +382,29 @@ TEST(Compress, ElasticEnergyFromAVariable)
   EXPECT_LT(c[EEL], 1.5 * pe);
 }
 
+TEST(Compress, ElasticVariableOfTheEnergyBetweenServoSteps)
+{
+  // a variable of the pair energy must be tallied on every servo step, also
+  // in a run that starts between servo steps and after a restart there
+  // (before, the first read "Energy was not tallied on needed timestep")
+  const std::string file = workfile("compress_pe.restart");
+  {
+    Lammps lmp;
+    cell(lmp);
+    lmp.cmds({"variable eel equal pe", "reset_timestep 5", compress_cmd("elastic v_eel"),
+              "run 150000 post no"});
+    const auto c = comp(lmp);
+    EXPECT_GT(c[EEL], 0.0);
+    EXPECT_EQ((long) lmp.thermo("step"), 150005L);
+    lmp.cmd("write_restart " + file);
+  }
+  Lammps lmp;
+  resume_cell(lmp, file, "elastic v_eel");
+  lmp.cmds({"variable eel equal pe", "run 100 post no"});
+  EXPECT_EQ((long) lmp.thermo("step"), 150105L);
+  EXPECT_GT(comp(lmp)[EEL], 0.0);
+}
+
 TEST(Compress, WallCoefficientByFixModify)
 {
   // fix_modify w mut 0.1 on a wall made with mut 0.5 gives the trajectory of
@@ -436,11 +474,17 @@ TEST(Compress, BadInput)
        "Fix grflow/compress: variable a is not equal-style"},
       {{"fix def all deform 1 x scale 0.99"}, "fix c all grflow/compress w net 1e5 10",
        "Must not have multiple fixes change box parameter x"},
+      // its setup() reads the compute, which reads the wall's contacts of
+      // the step: the wall fix must be set up first
+      {{"unfix w"}, "fix c all grflow/compress w net 1e5 10",
+       "fix grflow/wall w has no contacts for step 0"},
   };
   for (const auto &c : init_cases) {
     auto s = base;
     s.insert(s.end(), c.extra.begin(), c.extra.end());
     s.push_back(c.line);
+    if (c.extra == std::vector<std::string>{"unfix w"})    // the wall after fix c
+      s.push_back("fix w all grflow/wall 1.0e6 1.15 mut 0.1 zlo $(zlo) zhi $(zhi)");
     const std::string msg = error_after(s, "run 0");
     EXPECT_NE(msg.find(c.expect), std::string::npos) << c.line << " -> '" << msg << "'";
   }

@@ -565,11 +565,16 @@ TEST_F(Shear, BadArguments)
        "Fix grflow/shear: compute nonet does not exist"},
       {{"compute ke all ke"}, "fix sh all grflow/shear w ke 0.02 1000",
        "Fix grflow/shear: compute ke is not a compute grflow/network"},
+      // its setup() reads the compute, which reads the wall's contacts of
+      // the step: the wall fix must be set up first
+      {{"unfix w"}, "fix sh all grflow/shear w net 0.02 1000",
+       "fix grflow/wall w has no contacts for step"},
   };
   for (const auto &c : init_cases) {
     auto s = setup;
     s.insert(s.end(), c.extra.begin(), c.extra.end());
     s.push_back(c.line);
+    if (c.extra == std::vector<std::string>{"unfix w"}) s.push_back(setup[1]);    // after fix sh
     const std::string msg = error_after(s, "run 0");
     EXPECT_NE(msg.find(c.expect), std::string::npos) << c.line << " -> '" << msg << "'";
   }

@@ -283,6 +283,14 @@ void ComputeGRFLOWNetwork::compute_vector()
   if (!list || !list->numneigh)
     error->all(FLERR, "Compute grflow/network needs the pair style's neighbor list: "
                "use it after a run (run 0 will do)");
+  // the wall contacts are those its post_force() recorded on this step: a
+  // fix that invokes the compute in its setup() before the wall fix's
+  // setup() has run (it was defined first) would read the last run's
+  for (auto *wfix : walls)
+    if (wfix->contacts_step() != update->ntimestep)
+      error->all(FLERR, "Compute grflow/network {}: fix grflow/wall {} has no contacts for step "
+                 "{}: define it before the fixes that invoke this compute, and use the compute "
+                 "after a run (run 0 will do)", id, wfix->id, update->ntimestep);
 
   if (atom->nmax > nmax) {
     memory->destroy(inside);

@@ -201,7 +201,7 @@ void FixGRFLOWCompress::init()
   dt = update->dt;
 
   // the energy must be tallied on the step the first servo update reads it
-  if (!elastic_var) pe->addstep(update->ntimestep);
+  schedule_energy(update->ntimestep);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -214,10 +214,11 @@ void FixGRFLOWCompress::setup(int /*vflag*/)
   // step that is not a multiple of N gives the same trajectory as one run.
   // On a multiple of N this repeats that step's update with stresses
   // re-measured at setup (full-step velocities in the dashpots).
+  // Between servo steps (a restart) only the outputs are re-measured.
   if (!started || update->ntimestep % servo_every == 0) servo();
+  else measure();
   started = 1;
-  const bigint next = (update->ntimestep / servo_every + 1) * servo_every;
-  if (!elastic_var) pe->addstep(next);
+  schedule_energy((update->ntimestep / servo_every + 1) * servo_every);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -226,18 +227,44 @@ void FixGRFLOWCompress::end_of_step()
 {
   if (update->ntimestep % servo_every == 0) {
     servo();
-    if (!elastic_var) pe->addstep(update->ntimestep + servo_every);
+    schedule_energy(update->ntimestep + servo_every);
   }
   deform_box();
 }
 
 /* ----------------------------------------------------------------------
-   stresses, energies, and new strain rates
+   new strain rates from the stresses
    rate_a = rate_max * clamp(factor_a * gain * (sigma_aa - p_target) / p_target, -1, 1)
    (compression is positive, a negative rate shrinks the cell)
 ------------------------------------------------------------------------- */
 
 void FixGRFLOWCompress::servo()
+{
+  measure();
+  for (int a = 0; a < 3; a++) {
+    const double err = (sigma[a] - p_target) / p_target;
+    damp_overshoot(a, err);
+    rate[a] = rate_max * MAX(-1.0, MIN(1.0, factor[a] * gain * err));
+  }
+  drive_walls();
+}
+
+/* ----------------------------------------------------------------------
+   the energy compute or the elastic-energy variable's computes must be
+   tallied on the next step that reads them
+------------------------------------------------------------------------- */
+
+void FixGRFLOWCompress::schedule_energy(bigint step)
+{
+  if (elastic_var) modify->addstep_compute(step);
+  else pe->addstep(step);
+}
+
+/* ----------------------------------------------------------------------
+   the outputs: stresses, their largest error, kinetic and elastic energy
+------------------------------------------------------------------------- */
+
+void FixGRFLOWCompress::measure()
 {
   if (network->invoked_vector != update->ntimestep) network->compute_vector();
   const double *s = network->vector;
@@ -246,12 +273,7 @@ void FixGRFLOWCompress::servo()
   sigma[2] = s[ComputeGRFLOWNetwork::SZZ];
 
   errmax = 0.0;
-  for (int a = 0; a < 3; a++) {
-    const double err = (sigma[a] - p_target) / p_target;
-    errmax = MAX(errmax, fabs(err));
-    damp_overshoot(a, err);
-    rate[a] = rate_max * MAX(-1.0, MIN(1.0, factor[a] * gain * err));
-  }
+  for (int a = 0; a < 3; a++) errmax = MAX(errmax, fabs((sigma[a] - p_target) / p_target));
 
   // kinetic energy, translational and rotational, of the fix group
   const double *const *v = atom->v;
@@ -272,12 +294,9 @@ void FixGRFLOWCompress::servo()
   if (elastic_var) {
     modify->clearstep_compute();
     eel = input->variable->compute_equal(ivar_elastic);
-    modify->addstep_compute(update->ntimestep + servo_every);
   } else {
     eel = pe->compute_scalar();
   }
-
-  drive_walls();
 }
 
 /* ----------------------------------------------------------------------

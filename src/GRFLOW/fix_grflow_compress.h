@@ -67,7 +67,9 @@ class FixGRFLOWCompress : public Fix {
   // last servo step
   double sigma[3], errmax, ke, eel;
 
+  void measure();
   void servo();
+  void schedule_energy(bigint step);
   void damp_overshoot(int, double);
   void drive_walls();
   void deform_box();

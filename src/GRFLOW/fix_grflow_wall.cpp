@@ -48,7 +48,7 @@ static constexpr int NVECTOR = 6;    // per wall: Fx Fy Fz z dx dy
 /* ---------------------------------------------------------------------- */
 
 FixGRFLOWWall::FixGRFLOWWall(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), history(nullptr), contact(nullptr)
+    Fix(lmp, narg, arg), history(nullptr), contact(nullptr), contact_step(-1)
 {
   if (!atom->radius_flag || !atom->omega_flag || !atom->torque_flag)
     error->all(FLERR, "Fix grflow/wall requires atom attributes radius, omega and torque "
@@ -194,6 +194,7 @@ void FixGRFLOWWall::post_force(int vflag)
   const double wzero[3] = {0.0, 0.0, 0.0};
 
   for (auto &w : walls) w.force[0] = w.force[1] = w.force[2] = 0.0;
+  contact_step = update->ntimestep;
 
   for (int i = 0; i < nlocal; i++) {
     for (int m = 0; m < NCONTACT; m++) contact[i][m] = 0.0;

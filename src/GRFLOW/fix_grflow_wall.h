@@ -78,6 +78,8 @@ class FixGRFLOWWall : public Fix {
   double contact_arm(int i, int w) const { return contact[i][4 * w]; }
   const double *contact_force(int i, int w) const { return &contact[i][4 * w + 1]; }
   double normal_sign(int w) const { return w == LO ? 1.0 : -1.0; }
+  // the step of those contacts (-1 before the first run's setup)
+  bigint contacts_step() const { return contact_step; }
 
  private:
   GRFLOW::ContactCoeffs coeff;
@@ -90,6 +92,7 @@ class FixGRFLOWWall : public Fix {
 
   double **history;    // per atom: 7 values per wall
   double **contact;    // per atom: arm, fx, fy, fz per wall (this step)
+  bigint contact_step;
 };
 
 }    // namespace LAMMPS_NS
