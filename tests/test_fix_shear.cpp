@@ -579,6 +579,15 @@ TEST_F(Shear, BadArguments)
     EXPECT_NE(msg.find(c.expect), std::string::npos) << c.line << " -> '" << msg << "'";
   }
 
+  // the glue group deleted after the fix was made
+  {
+    auto s = setup;
+    s.insert(s.end(), {"group top id 1", "fix sh all grflow/shear w net 0.02 1000 glue top",
+                       "group top delete"});
+    const std::string msg = error_after(s, "run 0");
+    EXPECT_NE(msg.find("Fix grflow/shear glue group top was deleted"), std::string::npos) << msg;
+  }
+
   // no stress when shearing starts: spheres apart, p = 0
   const std::string msg = error_after(
       {"units si", "atom_style sphere", "boundary p p f", "region box block 0 0.01 0 0.01 0 0.01",

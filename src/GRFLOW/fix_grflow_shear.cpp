@@ -95,6 +95,7 @@ FixGRFLOWShear::FixGRFLOWShear(LAMMPS *lmp, int narg, char **arg) :
       iglue = group->find(arg[iarg + 1]);
       if (iglue < 0) error->all(FLERR, "Fix grflow/shear glue group {} does not exist", arg[iarg + 1]);
       gluebit = group->bitmask[iglue];
+      glue_name = arg[iarg + 1];
     } else {
       error->all(FLERR, "Unknown fix grflow/shear keyword: {}", kw);
     }
@@ -154,8 +155,9 @@ void FixGRFLOWShear::init()
   network = ComputeGRFLOWNetwork::find(lmp, "Fix grflow/shear", id_network);
 
   if (iglue >= 0) {
-    if (group->find(group->names[iglue]) != iglue)
-      error->all(FLERR, "Fix grflow/shear glue group was deleted");
+    // group delete guards only a fix's own group
+    if (group->find(glue_name) != iglue)
+      error->all(FLERR, "Fix grflow/shear glue group {} was deleted", glue_name);
   }
   dt = update->dt;
 }

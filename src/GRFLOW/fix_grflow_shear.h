@@ -49,6 +49,7 @@ class FixGRFLOWShear : public Fix {
   class FixGRFLOWWall *wall;
   class ComputeGRFLOWNetwork *network;
   int iglue, gluebit;
+  std::string glue_name;
   double vx, tau_amp, ru_liq;
   int check_every;
   double stop_cycles_after_il, stop_cycles, stop_gamma;
