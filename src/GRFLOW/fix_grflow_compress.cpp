@@ -215,8 +215,10 @@ void FixGRFLOWCompress::setup(int /*vflag*/)
   // On a multiple of N this repeats that step's update with stresses
   // re-measured at setup (full-step velocities in the dashpots).
   // Between servo steps (a restart) only the outputs are re-measured.
-  if (!started || update->ntimestep % servo_every == 0) servo();
-  else measure();
+  if (!started || update->ntimestep % servo_every == 0)
+    servo();
+  else
+    measure();
   started = 1;
   schedule_energy((update->ntimestep / servo_every + 1) * servo_every);
 }
@@ -256,8 +258,10 @@ void FixGRFLOWCompress::servo()
 
 void FixGRFLOWCompress::schedule_energy(bigint step)
 {
-  if (elastic_var) modify->addstep_compute(step);
-  else pe->addstep(step);
+  if (elastic_var)
+    modify->addstep_compute(step);
+  else
+    pe->addstep(step);
 }
 
 /* ----------------------------------------------------------------------
