@@ -265,14 +265,19 @@ def network_from_snapshot(atoms, contacts, zlo, zhi, slab=0.8, cmax=12, stress=N
     separating, doc/compute_grflow_network.rst) are left out.  Each end of a
     contact that belongs to a particle inside counts for that particle and
     adds n n to the fabric.  A particle inside that overlaps a wall plane
-    is counted as touching that wall (the wall forces are not dumped; in the
-    decks' central slab no particle inside can reach a wall).
+    is counted as touching that wall: the wall forces are not dumped, so
+    an overlap with a zero force (which the compute does not count) cannot
+    be told apart; in the decks' central slab no particle inside can reach
+    a wall.
 
     Returns a dict: ``N_p``, ``floaters``, ``N_c``, ``z_g``, ``z``, ``P``
     (P_0 .. P_cmax, the last for cmax or more contacts), ``a`` (the 3x3
     fabric anisotropy tensor 15/2 (F - I/3)), ``a_abs`` (sqrt(3/2 a:a)) and,
     if ``stress`` (sxx syy szz sxy sxz syz, the series columns) is given,
-    ``a_c`` with the sign of a:s, s the deviator of the symmetric stress.
+    ``a_c`` with the sign of a:s, s the deviator of the stress made
+    symmetric from those columns.  The compute uses (s_ab + s_ba)/2 of its
+    full tensor, and the series does not hold s_yx, s_zx, s_zy: where a:s
+    is near 0 the two signs can differ.
     """
     ac, cc = atoms["columns"], contacts["columns"]
     ids = ac["id"].astype(np.int64)

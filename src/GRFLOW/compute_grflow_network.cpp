@@ -275,8 +275,6 @@ void ComputeGRFLOWNetwork::set_inside(double &volume)
 
 void ComputeGRFLOWNetwork::compute_vector()
 {
-  invoked_vector = update->ntimestep;
-
   check_setup();
   Pair *pair = force->pair;
   NeighList *list = pair->list;
@@ -286,11 +284,16 @@ void ComputeGRFLOWNetwork::compute_vector()
   // the wall contacts are those its post_force() recorded on this step: a
   // fix that invokes the compute in its setup() before the wall fix's
   // setup() has run (it was defined first) would read the last run's
-  for (auto *wfix : walls)
-    if (wfix->contacts_step() != update->ntimestep)
-      error->all(FLERR, "Compute grflow/network {}: fix grflow/wall {} has no contacts for step "
-                 "{}: define it before the fixes that invoke this compute, and use the compute "
-                 "after a run (run 0 will do)", id, wfix->id, update->ntimestep);
+  for (auto *wfix : walls) {
+    if (wfix->contacts_step() == update->ntimestep) continue;
+    if (update->whichflag == 2)
+      error->all(FLERR, "Compute grflow/network {} cannot be used during a minimization: fix "
+                 "grflow/wall {} records no wall contacts there", id, wfix->id);
+    error->all(FLERR, "Compute grflow/network {}: fix grflow/wall {} has no contacts for step "
+               "{}: define it before the fixes that invoke this compute, and use the compute "
+               "after a run (run 0 will do)", id, wfix->id, update->ntimestep);
+  }
+  invoked_vector = update->ntimestep;
 
   if (atom->nmax > nmax) {
     memory->destroy(inside);

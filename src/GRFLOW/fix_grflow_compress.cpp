@@ -214,7 +214,8 @@ void FixGRFLOWCompress::setup(int /*vflag*/)
   // step that is not a multiple of N gives the same trajectory as one run.
   // On a multiple of N this repeats that step's update with stresses
   // re-measured at setup (full-step velocities in the dashpots).
-  // Between servo steps (a restart) only the outputs are re-measured.
+  // A run that starts between servo steps (a split run, a restart) keeps
+  // the rates and re-measures the outputs only.
   if (!started || update->ntimestep % servo_every == 0)
     servo();
   else

@@ -64,7 +64,7 @@ class FixGRFLOWCompress : public Fix {
   double factor[3], err_last[3];
   int novershoot[3];
 
-  // last servo step
+  // outputs, measured on the last servo step or at setup
   double sigma[3], errmax, ke, eel;
 
   void measure();
