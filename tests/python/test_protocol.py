@@ -342,6 +342,68 @@ def test_agitation_keeps_density_lowers_coordination(tmp_path):
     assert abs(agitated["p"] - 1.0e5) < 0.15e5
 
 
+# Table 1's other coefficients as -var ratios, chosen off their defaults
+RATIOS = {"kt_kn": 0.5, "ct_cn": 0.25, "kr_kn": 0.2, "cr_cn": 0.125, "mu_r": 0.3,
+          "ko_kn": 0.25, "co_cn": 0.0625, "mu_o": 0.2}
+
+
+def echoed(log, start):
+    """The first command in the log (echoed after variable substitution)
+    that starts with start, as a list of words."""
+    line = next((l for l in log.splitlines() if l.startswith(start) and "$" not in l), None)
+    assert line is not None, f"no '{start}' command in the log"
+    return line.split()
+
+
+def keywords(words):
+    """keyword -> value of the 'keyword number' pairs in a command"""
+    out = {}
+    for k, v in zip(words, words[1:]):
+        try:
+            out.setdefault(k, float(v))
+        except ValueError:
+            pass
+    return out
+
+
+@pytest.mark.parametrize("deck", [DECK, STOCK_DECK], ids=["grflow", "stock"])
+def test_contact_ratios_reach_particles_and_walls(tmp_path, deck):
+    """-var kt_kn ... mu_o set the pair coefficients and the walls' alike
+    (kn = 1e6 N/m, cn = 1.15 kg/s by default): every coefficient in the
+    commands the deck ran, as LAMMPS echoed them."""
+    out = tmp_path / "run"
+    cmd = lmp_cmd(out, deck=deck, preset="quick", N=200, stage="prep", **RATIOS)
+    cmd[cmd.index("-echo") + 1] = "log"
+    proc = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
+    assert proc.returncode == 0, (proc.stdout[-2000:] + proc.stderr[-2000:]
+                                  + tail(out / "log.prep.lammps"))
+    log = (out / "log.prep.lammps").read_text()
+    kn, cn, mu_prep = 1.0e6, 1.15, 0.15
+    want = {"kt": 0.5 * kn, "ct": 0.25 * cn, "kr": 0.2 * kn, "cr": 0.125 * cn, "mur": 0.3,
+            "ko": 0.25 * kn, "co": 0.0625 * cn, "muo": 0.2, "mut": mu_prep}
+    wall = keywords(echoed(log, "fix             walls all grflow/wall"))
+    for k, v in want.items():
+        assert wall[k] == pytest.approx(v, rel=1e-12), k
+    pair = echoed(log, "pair_coeff * *")
+    if deck == DECK:
+        got = keywords(pair)
+        for k, v in want.items():
+            assert got[k] == pytest.approx(v, rel=1e-12), k
+    else:
+        # hooke kn cn ... linear_history kt ct/cn mu rolling sds kr cr mur
+        # twisting sds ko a'^2 co a'^2 muo a' (a' = d_mean/4)
+        a = json.loads((out / "prep.json").read_text())["d_mean"] / 4
+        i = pair.index("linear_history")
+        assert [float(v) for v in pair[i + 1:i + 4]] == pytest.approx(
+            [want["kt"], 0.25, mu_prep], rel=1e-12)
+        i = pair.index("rolling")
+        assert [float(v) for v in pair[i + 2:i + 5]] == pytest.approx(
+            [want["kr"], want["cr"], want["mur"]], rel=1e-12)
+        i = pair.index("twisting")
+        assert [float(v) for v in pair[i + 2:i + 5]] == pytest.approx(
+            [want["ko"] * a * a, want["co"] * a * a, want["muo"] * a], rel=1e-9)
+
+
 @pytest.mark.parametrize("var,expect", [
     ({"preset": "fast"}, "unknown preset fast"),
     ({"stage": "both"}, "unknown stage both"),
