@@ -5,8 +5,9 @@
 e = 0.647 +- 0.005 at 100 kPa (the paper's sample) for a given N and seed.
 
 Each evaluation runs the preparation stage of inputs/cyclic_shear.lmp
-(-var stage prep: sample, compression with mu_prep, mu_t = 0.5 and
-re-equilibration) and reads e from prep.json.  e grows with mu_prep, so
+(-var stage prep: sample, compression with mu_prep, the agitation stage
+with its recompression at mu_rec unless agitate_dilation is 1, mu_t = 0.5
+and re-equilibration) and reads e from prep.json.  e grows with mu_prep, so
 the search brackets the target between --lo and --hi and then narrows the
 bracket by regula falsi (with bisection steps when one end stalls).  It
 prints e against mu_prep as it goes and writes the table to

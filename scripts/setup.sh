@@ -4,7 +4,7 @@
 # grflowplugin.so and the LAMMPS Python module, installed to /usr/local
 # (root) or ~/.local.  Then checks the installed lmp, plugin and module,
 # runs the paper's protocol with the quick preset on 2 MPI ranks
-# (runs/quick, a few minutes) and makes the figures of analysis/ from it
+# (runs/quick, about a minute) and makes the figures of analysis/ from it
 # (runs/quick/figures).  GRFLOW_SKIP_RUN=1 skips the run.
 #
 #   scripts/setup.sh [extra cmake -D options]
