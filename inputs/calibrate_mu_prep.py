@@ -11,11 +11,14 @@ and re-equilibration) and reads e from prep.json.  e grows with mu_prep, so
 the search brackets the target between --lo and --hi and then narrows the
 bracket by regula falsi (with bisection steps when one end stalls).  It
 prints e against mu_prep as it goes and writes the table to
-WORKDIR/calibration.txt.
+WORKDIR/calibration.txt.  --try evaluates candidates first (a value known
+from an earlier search, to check it still holds): one within the tolerance
+ends the search, the others narrow the bracket in place of --lo or --hi.
 
     /usr/bin/python3 inputs/calibrate_mu_prep.py                 # N = 8000, default seed
     /usr/bin/python3 inputs/calibrate_mu_prep.py --N 400 --np 2
     /usr/bin/python3 inputs/calibrate_mu_prep.py --var rate_max 5   # any other -var
+    /usr/bin/python3 inputs/calibrate_mu_prep.py --try 0.095         # check a candidate first
 
 Exit status 0 when a value within the tolerance was found, 1 if not within
 --max-runs, 2 if the target is not bracketed by --lo and --hi.
@@ -60,6 +63,8 @@ def main():
     ap.add_argument("--tol", type=float, default=0.005)
     ap.add_argument("--lo", type=float, default=0.0, help="lowest mu_prep tried")
     ap.add_argument("--hi", type=float, default=0.3, help="highest mu_prep tried")
+    ap.add_argument("--try", dest="tries", type=float, nargs="+", default=[], metavar="MU",
+                    help="candidates evaluated before the bracket")
     ap.add_argument("--max-runs", type=int, default=10)
     ap.add_argument("--preset", default="paper")
     ap.add_argument("--np", type=int, default=1, help="MPI ranks per run")
@@ -69,11 +74,20 @@ def main():
     ap.add_argument("--var", nargs=2, action="append", default=[], metavar=("NAME", "VALUE"),
                     help="extra -var for the deck")
     args = ap.parse_args()
+    if not 0 <= args.lo < args.hi:
+        ap.error(f"need 0 <= --lo < --hi, got --lo {args.lo} --hi {args.hi}")
+    if args.tol <= 0 or args.max_runs < 1:
+        ap.error("--tol must be > 0 and --max-runs >= 1")
+    if any(not args.lo <= mu <= args.hi for mu in args.tries):
+        ap.error(f"--try values must lie in [--lo, --hi] = [{args.lo}, {args.hi}]")
     os.makedirs(args.workdir, exist_ok=True)
 
     table = []
 
+    # trial values have 5 decimals: the value run is the one printed, named
+    # in WORKDIR and given back to --try
     def evaluate(mu):
+        assert mu == round(mu, 5)
         e = run_prep(args, mu)
         table.append((mu, e))
         print(f"mu_prep = {mu:.5f}   e = {e:.4f}", flush=True)
@@ -81,27 +95,45 @@ def main():
             f.write(f"# N = {args.N}, seed = {args.seed}, target e = {args.target} +- {args.tol}\n")
             f.write("# mu_prep e\n")
             for m, v in sorted(table):
-                f.write(f"{m:.6f} {v:.6f}\n")
+                f.write(f"{m:.5f} {v:.6f}\n")
         return e
 
     print(f"calibrating mu_prep for e = {args.target} +- {args.tol}, N = {args.N}, "
           f"seed = {args.seed}")
-    lo, hi = args.lo, args.hi
-    elo, ehi = evaluate(lo), evaluate(hi)
+
+    def within(entry):
+        return abs(entry[1] - args.target) <= args.tol
+
+    for mu in map(lambda m: round(m, 5), args.tries):
+        if within((mu, evaluate(mu))):
+            print(f"found mu_prep = {mu:.5f} (e = {table[-1][1]:.4f})")
+            return 0
+    # the tries below / above the target replace the bracket's ends
+    below = [t for t in table if t[1] < args.target]
+    above = [t for t in table if t[1] > args.target]
+    lo, elo = max(below) if below else (round(args.lo, 5), None)
+    hi, ehi = min(above) if above else (round(args.hi, 5), None)
+    if elo is None:
+        elo = evaluate(lo)
+    if ehi is None:
+        ehi = evaluate(hi)
     best = min(table, key=lambda t: abs(t[1] - args.target))
     if not (elo <= args.target <= ehi):
-        if abs(best[1] - args.target) <= args.tol:
+        if within(best):
             print(f"found mu_prep = {best[0]:.5f} (e = {best[1]:.4f})")
             return 0
         print(f"target e = {args.target} not between e({lo}) = {elo:.4f} and e({hi}) = {ehi:.4f}")
         return 2
     side = 0
-    while abs(best[1] - args.target) > args.tol and len(table) < args.max_runs:
+    while not within(best) and len(table) < args.max_runs:
         # regula falsi, with a bisection step after two moves of the same end
         mu = lo + (args.target - elo) * (hi - lo) / (ehi - elo) if ehi > elo else 0.5 * (lo + hi)
         if abs(side) >= 2:
             mu = 0.5 * (lo + hi)
             side = 0
+        mu = round(mu, 5)
+        if mu in (lo, hi):    # bracket narrower than the 5 decimals
+            break
         e = evaluate(mu)
         if e < args.target:
             lo, elo = mu, e
@@ -110,7 +142,7 @@ def main():
             hi, ehi = mu, e
             side = side - 1 if side <= 0 else -1
         best = min(table, key=lambda t: abs(t[1] - args.target))
-    if abs(best[1] - args.target) <= args.tol:
+    if within(best):
         print(f"found mu_prep = {best[0]:.5f} (e = {best[1]:.4f})")
         return 0
     print(f"not within tolerance after {len(table)} runs; closest: mu_prep = {best[0]:.5f} "
