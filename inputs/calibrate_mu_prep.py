@@ -20,8 +20,12 @@ ends the search, the others narrow the bracket in place of --lo or --hi.
     /usr/bin/python3 inputs/calibrate_mu_prep.py --var rate_max 5   # any other -var
     /usr/bin/python3 inputs/calibrate_mu_prep.py --try 0.095         # check a candidate first
 
-Exit status 0 when a value within the tolerance was found, 1 if not within
---max-runs, 2 if the target is not bracketed by --lo and --hi.
+Every run counts towards --max-runs (the tries and both bracket ends
+included).  Exit status 0 when a value within the tolerance was found; 1
+if none was within --max-runs, or the bracket shrank below the 5 decimals
+of the trial values; 2 for bad arguments, or a target not bracketed (by
+--lo and --hi, or tries whose e does not grow with mu_prep); 3 if a
+preparation failed.
 """
 
 import argparse
@@ -48,8 +52,9 @@ def run_prep(args, mu):
     prep = os.path.join(out, "prep.json")
     if proc.returncode != 0 or not os.path.exists(prep):
         log = os.path.join(out, "log.prep.lammps")
-        sys.exit(f"preparation failed for mu_prep = {mu} (exit {proc.returncode}); see {log}\n"
-                 + proc.stdout[-2000:] + proc.stderr[-2000:])
+        print(f"preparation failed for mu_prep = {mu} (exit {proc.returncode}); see {log}\n"
+              + proc.stdout[-2000:] + proc.stderr[-2000:], file=sys.stderr)
+        sys.exit(3)
     with open(prep) as f:
         e = json.load(f)["e"]
     return e
@@ -80,6 +85,10 @@ def main():
         ap.error("--tol must be > 0 and --max-runs >= 1")
     if any(not args.lo <= mu <= args.hi for mu in args.tries):
         ap.error(f"--try values must lie in [--lo, --hi] = [{args.lo}, {args.hi}]")
+    tries = list(dict.fromkeys(round(mu, 5) for mu in args.tries))
+    if args.max_runs < len(tries) + 2:
+        ap.error(f"--max-runs {args.max_runs} leaves no room for {len(tries)} tries "
+                 "and the two bracket ends")
     os.makedirs(args.workdir, exist_ok=True)
 
     table = []
@@ -104,7 +113,7 @@ def main():
     def within(entry):
         return abs(entry[1] - args.target) <= args.tol
 
-    for mu in map(lambda m: round(m, 5), args.tries):
+    for mu in tries:
         if within((mu, evaluate(mu))):
             print(f"found mu_prep = {mu:.5f} (e = {table[-1][1]:.4f})")
             return 0
@@ -113,6 +122,11 @@ def main():
     above = [t for t in table if t[1] > args.target]
     lo, elo = max(below) if below else (round(args.lo, 5), None)
     hi, ehi = min(above) if above else (round(args.hi, 5), None)
+    if lo >= hi:
+        runs = ", ".join(f"e({m:.5f}) = {v:.4f}" for m, v in sorted(table))
+        print(f"target e = {args.target} not bracketed: e is below it at mu_prep = {lo:.5f}, "
+              f"not below the bracket's upper end {hi:.5f} ({runs})")
+        return 2
     if elo is None:
         elo = evaluate(lo)
     if ehi is None:
@@ -132,7 +146,10 @@ def main():
             mu = 0.5 * (lo + hi)
             side = 0
         mu = round(mu, 5)
-        if mu in (lo, hi):    # bracket narrower than the 5 decimals
+        if mu in (lo, hi):
+            mu = round(0.5 * (lo + hi), 5)
+        if mu in (lo, hi):
+            print(f"the bracket [{lo:.5f}, {hi:.5f}] is narrower than the 5 decimals of mu_prep")
             break
         e = evaluate(mu)
         if e < args.target:

@@ -7,6 +7,10 @@
    (the preparation is deterministic).
 3. A --try value above the target replaces --hi, which is not run.
 4. Bad arguments stop with a message.
+5. The search logic on a stand-in for lmp that writes prep.json with a
+   given e(mu_prep): exact on a linear e, stops when the bracket shrinks
+   below the 5 decimals, when tries are not monotonic, and when a
+   preparation fails, each with its exit status.
 
 Environment: LMP (lmp binary), GRFLOW_INPUTS (the inputs/ directory).
 """
@@ -14,6 +18,7 @@ Environment: LMP (lmp binary), GRFLOW_INPUTS (the inputs/ directory).
 import json
 import os
 import re
+import stat
 import subprocess
 import sys
 
@@ -78,7 +83,7 @@ def test_finds_the_target_void_ratio(search):
     # a search, not a scan: fewer runs than the limit, only the last within
     # the tolerance
     assert len(printed) < 8
-    assert all(abs(e - TARGET) > TOL for _, e in printed[:-1])
+    assert all(abs(prep_e(work, m) - TARGET) > TOL for m, _ in printed[:-1])
 
 
 def test_try_within_tolerance_ends_at_once(search, tmp_path):
@@ -93,7 +98,8 @@ def test_try_within_tolerance_ends_at_once(search, tmp_path):
 def test_a_try_replaces_a_bracket_end(search, tmp_path):
     """--hi 1 but --try 0.3 (above the target): 1 is never run, and the
     search goes on from [0, 0.3] as the first one did."""
-    _, proc, printed = search
+    work, proc, printed = search
+    assert prep_e(work, 0.3) > TARGET + TOL    # so 0.3 does not end it
     again, runs = calibrate(tmp_path, "--lo", "0", "--hi", "1", "--try", "0.3",
                             "--max-runs", "8")
     assert runs[0][0] == 0.3 and all(m != 1.0 for m, _ in runs)
@@ -110,3 +116,71 @@ def test_bad_arguments(tmp_path, args, expect):
     proc, printed = calibrate(tmp_path, *args, check=False)
     assert proc.returncode != 0 and not printed
     assert expect in proc.stderr
+
+
+FAKE = """#!/usr/bin/python3
+import json, os, sys
+a = sys.argv
+var = {a[i + 1]: a[i + 2] for i in range(len(a) - 2) if a[i] == "-var"}
+mu = float(var["mu_prep"])
+if mu == float(os.environ.get("FAKE_FAIL", "-1")):
+    sys.exit(1)
+os.makedirs(var["outdir"], exist_ok=True)
+with open(os.path.join(var["outdir"], "prep.json"), "w") as f:
+    json.dump({"e": eval(os.environ["FAKE_E"])}, f)
+"""
+
+
+def fake(tmp_path, e_of_mu, *args, fail=None):
+    """calibrate_mu_prep.py with a stand-in lmp whose e is e_of_mu (a Python
+    expression in mu)"""
+    exe = tmp_path / "fake_lmp"
+    exe.write_text(FAKE)
+    exe.chmod(exe.stat().st_mode | stat.S_IXUSR)
+    env = dict(os.environ, FAKE_E=e_of_mu, FAKE_FAIL=str(-1 if fail is None else fail))
+    proc = subprocess.run([sys.executable, SCRIPT, "--workdir", str(tmp_path / "w"),
+                           "--lmp", str(exe)] + list(args),
+                          capture_output=True, text=True, timeout=120, env=env)
+    printed = [tuple(float(v) for v in m.groups())
+               for m in map(LINE.match, proc.stdout.splitlines()) if m]
+    return proc, printed
+
+
+def test_search_logic_linear(tmp_path):
+    # e = 0.6 + 0.5 mu: regula falsi lands on mu = 0.094 at once
+    proc, printed = fake(tmp_path, "0.6 + 0.5 * mu")
+    assert proc.returncode == 0
+    assert [m for m, _ in printed] == [0.0, 0.3, 0.094]
+    assert "found mu_prep = 0.09400" in proc.stdout
+
+
+def test_search_logic_step_shrinks_bracket(tmp_path):
+    # a jump across the tolerance band at 0.1234567: bisection down to 1e-5
+    proc, printed = fake(tmp_path, "0.6 if mu < 0.1234567 else 0.7", "--max-runs", "40")
+    assert proc.returncode == 1
+    assert "narrower than the 5 decimals" in proc.stdout
+    lo = max(m for m, e in printed if e < 0.647)
+    hi = min(m for m, e in printed if e > 0.647)
+    assert lo < 0.1234567 <= hi and round(hi - lo, 5) <= 1e-5
+    assert len(printed) == len(set(printed)) < 40
+
+
+def test_search_logic_tries_not_monotonic(tmp_path):
+    # e falls with mu: the try below the target lies above the one above it
+    proc, printed = fake(tmp_path, "0.75 - mu", "--try", "0.2", "0.01")
+    assert proc.returncode == 2
+    assert "not bracketed" in proc.stdout
+    assert [m for m, _ in printed] == [0.2, 0.01]
+
+
+def test_search_logic_failed_preparation(tmp_path):
+    proc, printed = fake(tmp_path, "0.6 + 0.5 * mu", fail=0.3)
+    assert proc.returncode == 3
+    assert "preparation failed for mu_prep = 0.3" in proc.stderr
+    assert [m for m, _ in printed] == [0.0]
+
+
+def test_max_runs_must_hold_the_tries(tmp_path):
+    proc, printed = fake(tmp_path, "0.6 + 0.5 * mu", "--try", "0.1", "0.2", "--max-runs", "3")
+    assert proc.returncode == 2 and not printed
+    assert "leaves no room for 2 tries" in proc.stderr

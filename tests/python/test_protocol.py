@@ -348,11 +348,11 @@ RATIOS = {"kt_kn": 0.5, "ct_cn": 0.25, "kr_kn": 0.2, "cr_cn": 0.125, "mu_r": 0.3
 
 
 def echoed(log, start):
-    """The first command in the log (echoed after variable substitution)
-    that starts with start, as a list of words."""
-    line = next((l for l in log.splitlines() if l.startswith(start) and "$" not in l), None)
-    assert line is not None, f"no '{start}' command in the log"
-    return line.split()
+    """The commands in the log (echoed after variable substitution) that
+    start with start, each as a list of words."""
+    found = [l.split() for l in log.splitlines() if l.startswith(start) and "$" not in l]
+    assert found, f"no '{start}' command in the log"
+    return found
 
 
 def keywords(words):
@@ -366,42 +366,62 @@ def keywords(words):
     return out
 
 
+def check_coefficients(pair, wall, want, stock, a):
+    """pair_coeff and fix grflow/wall commands (word lists) against the
+    coefficients want (grflow keyword names); a = reduced radius a'"""
+    for k, v in want.items():
+        assert keywords(wall)[k] == pytest.approx(v, rel=1e-12), k
+    if not stock:
+        for k, v in want.items():
+            assert keywords(pair)[k] == pytest.approx(v, rel=1e-12), k
+        return
+    # hooke kn cn ... linear_history kt ct/cn mu rolling sds kr cr mur
+    # twisting sds ko a'^2 co a'^2 muo a'
+    i = pair.index("linear_history")
+    assert [float(v) for v in pair[i + 1:i + 4]] == pytest.approx(
+        [want["kt"], want["ct"] / 1.15, want["mut"]], rel=1e-12)
+    i = pair.index("rolling")
+    assert [float(v) for v in pair[i + 2:i + 5]] == pytest.approx(
+        [want["kr"], want["cr"], want["mur"]], rel=1e-12)
+    i = pair.index("twisting")
+    assert [float(v) for v in pair[i + 2:i + 5]] == pytest.approx(
+        [want["ko"] * a * a, want["co"] * a * a, want["muo"] * a], rel=1e-9)
+
+
 @pytest.mark.parametrize("deck", [DECK, STOCK_DECK], ids=["grflow", "stock"])
 def test_contact_ratios_reach_particles_and_walls(tmp_path, deck):
     """-var kt_kn ... mu_o set the pair coefficients and the walls' alike
-    (kn = 1e6 N/m, cn = 1.15 kg/s by default): every coefficient in the
-    commands the deck ran, as LAMMPS echoed them."""
+    (kn = 1e6 N/m, cn = 1.15 kg/s by default), in every stage: every
+    coefficient in the commands the deck ran, as LAMMPS echoed them, first
+    with mu_prep, then after the switch to mu_t, then in the shear stage
+    (a new pair style and walls after read_restart); prep.json records
+    them."""
     out = tmp_path / "run"
-    cmd = lmp_cmd(out, deck=deck, preset="quick", N=200, stage="prep", **RATIOS)
+    cmd = lmp_cmd(out, deck=deck, preset="quick", N=200, max_steps=500, **RATIOS)
     cmd[cmd.index("-echo") + 1] = "log"
     proc = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
     assert proc.returncode == 0, (proc.stdout[-2000:] + proc.stderr[-2000:]
-                                  + tail(out / "log.prep.lammps"))
-    log = (out / "log.prep.lammps").read_text()
-    kn, cn, mu_prep = 1.0e6, 1.15, 0.15
+                                  + tail(out / "log.prep.lammps") + tail(out / "log.shear.lammps"))
+    prep = json.loads((out / "prep.json").read_text())
+    for k, v in RATIOS.items():
+        assert prep[k] == v, k
+    assert prep["kn"] == 1.0e6 and prep["cn"] == 1.15
+    kn, cn = 1.0e6, 1.15
     want = {"kt": 0.5 * kn, "ct": 0.25 * cn, "kr": 0.2 * kn, "cr": 0.125 * cn, "mur": 0.3,
-            "ko": 0.25 * kn, "co": 0.0625 * cn, "muo": 0.2, "mut": mu_prep}
-    wall = keywords(echoed(log, "fix             walls all grflow/wall"))
-    for k, v in want.items():
-        assert wall[k] == pytest.approx(v, rel=1e-12), k
-    pair = echoed(log, "pair_coeff * *")
-    if deck == DECK:
-        got = keywords(pair)
-        for k, v in want.items():
-            assert got[k] == pytest.approx(v, rel=1e-12), k
-    else:
-        # hooke kn cn ... linear_history kt ct/cn mu rolling sds kr cr mur
-        # twisting sds ko a'^2 co a'^2 muo a' (a' = d_mean/4)
-        a = json.loads((out / "prep.json").read_text())["d_mean"] / 4
-        i = pair.index("linear_history")
-        assert [float(v) for v in pair[i + 1:i + 4]] == pytest.approx(
-            [want["kt"], 0.25, mu_prep], rel=1e-12)
-        i = pair.index("rolling")
-        assert [float(v) for v in pair[i + 2:i + 5]] == pytest.approx(
-            [want["kr"], want["cr"], want["mur"]], rel=1e-12)
-        i = pair.index("twisting")
-        assert [float(v) for v in pair[i + 2:i + 5]] == pytest.approx(
-            [want["ko"] * a * a, want["co"] * a * a, want["muo"] * a], rel=1e-9)
+            "ko": 0.25 * kn, "co": 0.0625 * cn, "muo": 0.2}
+    stock, a = deck == STOCK_DECK, prep["d_mean"] / 4
+    wall_cmd, pair_cmd = "fix             walls all grflow/wall", "pair_coeff * *"
+    log = (out / "log.prep.lammps").read_text()
+    pairs = echoed(log, pair_cmd)
+    check_coefficients(pairs[0], echoed(log, wall_cmd)[0], dict(want, mut=0.15), stock, a)
+    # the switch to mu_t (prepare.lmp, stage 3)
+    last = pairs[-1]
+    mut = float(last[last.index("linear_history") + 3]) if stock else keywords(last)["mut"]
+    assert mut == 0.5
+    assert echoed(log, "fix_modify      walls mut")[-1][-1] == "0.5"
+    log = (out / "log.shear.lammps").read_text()
+    check_coefficients(echoed(log, pair_cmd)[0], echoed(log, wall_cmd)[0], dict(want, mut=0.5),
+                       stock, a)
 
 
 @pytest.mark.parametrize("var,expect", [
