@@ -34,13 +34,19 @@ TARGET, TOL = 0.647, 0.005
 LINE = re.compile(r"^mu_prep = ([0-9.]+)\s+e = ([0-9.]+)$")
 
 
-def calibrate(workdir, *extra, check=True):
-    proc = subprocess.run([sys.executable, SCRIPT, "--workdir", str(workdir)] + SMALL
-                          + list(extra), capture_output=True, text=True, timeout=600)
-    if check:
-        assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
+def script(workdir, args, env=None, timeout=600):
+    """Run the script; return the process and its printed (mu_prep, e) lines."""
+    proc = subprocess.run([sys.executable, SCRIPT, "--workdir", str(workdir)] + list(args),
+                          capture_output=True, text=True, timeout=timeout, env=env)
     printed = [tuple(float(v) for v in m.groups())
                for m in map(LINE.match, proc.stdout.splitlines()) if m]
+    return proc, printed
+
+
+def calibrate(workdir, *extra, check=True):
+    proc, printed = script(workdir, SMALL + list(extra))
+    if check:
+        assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
     return proc, printed
 
 
@@ -138,12 +144,7 @@ def fake(tmp_path, e_of_mu, *args, fail=None):
     exe.write_text(FAKE)
     exe.chmod(exe.stat().st_mode | stat.S_IXUSR)
     env = dict(os.environ, FAKE_E=e_of_mu, FAKE_FAIL=str(-1 if fail is None else fail))
-    proc = subprocess.run([sys.executable, SCRIPT, "--workdir", str(tmp_path / "w"),
-                           "--lmp", str(exe)] + list(args),
-                          capture_output=True, text=True, timeout=120, env=env)
-    printed = [tuple(float(v) for v in m.groups())
-               for m in map(LINE.match, proc.stdout.splitlines()) if m]
-    return proc, printed
+    return script(tmp_path / "w", ["--lmp", str(exe)] + list(args), env=env, timeout=120)
 
 
 def test_search_logic_linear(tmp_path):

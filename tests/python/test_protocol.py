@@ -430,6 +430,7 @@ def test_contact_ratios_reach_particles_and_walls(tmp_path, deck):
     ({"pair": "hertz"}, "unknown pair hertz"),
     ({"resume": "yes", "stage": "prep"}, "cannot go with stage prep"),
     ({"agitate_dilation": "0.99"}, "agitate_dilation 0.99 must be >= 1"),
+    ({"kt_kn": "-0.5"}, "kt must be >= 0, got -500000"),
 ])
 def test_bad_parameters(tmp_path, var, expect):
     proc = subprocess.run(lmp_cmd(tmp_path / "bad", screen=True, **var), capture_output=True,
