@@ -2,11 +2,15 @@
 # into the original tree.
 #
 # The staged tree lives in the build directory.  Its src/ is a real directory
-# of symbolic links to the original entries plus a link to our src/GRFLOW, and
-# its cmake/ is a copy whose package list names GRFLOW.  bench/ and potentials/
+# of symbolic links to the original entries plus a link to our src/GRFLOW; its
+# src/OPENMP is a real directory too, of links to the original OPENMP entries
+# plus our accelerator variants (src/OPENMP/*_omp.*, found there by the OPENMP
+# package's RegisterStylesExt as for any other package); its cmake/ is a copy
+# whose package list names GRFLOW.  bench/ and potentials/
 # are staged empty so "install" does not copy data GRFLOW never uses.
 #
-# In:  LAMMPS_SOURCE_DIR (original tree), GRFLOW_PACKAGE_DIR (our src/GRFLOW)
+# In:  LAMMPS_SOURCE_DIR (original tree), GRFLOW_PACKAGE_DIR (our src/GRFLOW),
+#      GRFLOW_OPENMP_DIR (our src/OPENMP)
 # Out: GRFLOW_STAGED_LAMMPS (staged tree root)
 
 function(grflow_stage_lammps)
@@ -23,13 +27,21 @@ function(grflow_stage_lammps)
   if(EXISTS ${orig}/src/GRFLOW)
     message(FATAL_ERROR "${orig}/src already has a GRFLOW folder; pass a clean LAMMPS tree")
   endif()
+  file(GLOB omp_files RELATIVE ${GRFLOW_OPENMP_DIR} ${GRFLOW_OPENMP_DIR}/*)
+  foreach(e ${omp_files})
+    if(EXISTS ${orig}/src/OPENMP/${e})
+      message(FATAL_ERROR "${orig}/src/OPENMP already has ${e}; pass a clean LAMMPS tree")
+    endif()
+  endforeach()
 
-  # rebuild the link farm when the original tree changes location
+  # rebuild the link farm when the original tree changes location or our
+  # OPENMP files change
   set(stamp ${stage}/.grflow-staged-from)
+  set(stamp_text "${orig}\nOPENMP: ${omp_files}")
   set(restage TRUE)
   if(EXISTS ${stamp})
     file(READ ${stamp} previous)
-    if(previous STREQUAL "${orig}")
+    if(previous STREQUAL "${stamp_text}")
       set(restage FALSE)
     endif()
   endif()
@@ -43,11 +55,20 @@ function(grflow_stage_lammps)
     endforeach()
     file(CREATE_LINK ${orig}/doc/lammps.1 ${stage}/doc/lammps.1 SYMBOLIC)
     file(GLOB entries RELATIVE ${orig}/src ${orig}/src/*)
+    list(REMOVE_ITEM entries OPENMP)
     foreach(e ${entries})
       file(CREATE_LINK ${orig}/src/${e} ${stage}/src/${e} SYMBOLIC)
     endforeach()
     file(CREATE_LINK ${GRFLOW_PACKAGE_DIR} ${stage}/src/GRFLOW SYMBOLIC)
-    file(WRITE ${stamp} "${orig}")
+    file(MAKE_DIRECTORY ${stage}/src/OPENMP)
+    file(GLOB entries RELATIVE ${orig}/src/OPENMP ${orig}/src/OPENMP/*)
+    foreach(e ${entries})
+      file(CREATE_LINK ${orig}/src/OPENMP/${e} ${stage}/src/OPENMP/${e} SYMBOLIC)
+    endforeach()
+    foreach(e ${omp_files})
+      file(CREATE_LINK ${GRFLOW_OPENMP_DIR}/${e} ${stage}/src/OPENMP/${e} SYMBOLIC)
+    endforeach()
+    file(WRITE ${stamp} "${stamp_text}")
   endif()
 
   # copy cmake/ and register GRFLOW as a standard package (idempotent)

@@ -22,6 +22,7 @@
 ------------------------------------------------------------------------- */
 
 #include "pair_granular_grflow.h"
+#include "pair_granular_grflow_eval.h"
 
 #include "grflow_coeffs.h"
 
@@ -107,149 +108,11 @@ PairGranularGRFLOW::~PairGranularGRFLOW()
 void PairGranularGRFLOW::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
-
-  // the pair loop is compiled for each combination of energy/virial
-  // tallying, newton_pair and special bonds (as in the OPT package), so the
-  // loop carries no tests of them; neighbor lists carry special-bond bits
-  // only in molecular systems, without them no special_lj lookup is needed
-  // (together about 10% of the pair time, bench/README.md)
-  const bool special = (atom->molecular != Atom::ATOMIC);
-  if (evflag) {
-    if (force->newton_pair) {
-      if (special)
-        eval<1, 1, 1>(eflag);
-      else
-        eval<1, 1, 0>(eflag);
-    } else {
-      if (special)
-        eval<1, 0, 1>(eflag);
-      else
-        eval<1, 0, 0>(eflag);
-    }
-  } else {
-    if (force->newton_pair) {
-      if (special)
-        eval<0, 1, 1>(eflag);
-      else
-        eval<0, 1, 0>(eflag);
-    } else {
-      if (special)
-        eval<0, 0, 1>(eflag);
-      else
-        eval<0, 0, 0>(eflag);
-    }
-  }
-}
-
-/* ---------------------------------------------------------------------- */
-
-template <int EVFLAG, int NEWTON_PAIR, int SPECIAL> void PairGranularGRFLOW::eval(int eflag)
-{
-  // no history updates during setup (forces are recomputed for the same state)
-  const bool update_history = (update->setupflag == 0);
-  const bool use_full_arm = (full_arm != 0);
-
-  double **x = atom->x;
-  double **v = atom->v;
-  double **f = atom->f;
-  double **omega = atom->omega;
-  double **torque = atom->torque;
-  const double *radius = atom->radius;
-  const int *type = atom->type;
-  const int nlocal = atom->nlocal;
-  const double *special_lj = force->special_lj;
-
-  const int inum = list->inum;
-  const int *ilist = list->ilist;
-  const int *numneigh = list->numneigh;
-  int **firstneigh = list->firstneigh;
-  int **firsttouch = fix_history->firstflag;
-  double **firsthistory = fix_history->firstvalue;
-
-  ContactGeometry g;
-  ContactForces out;
-  double del[3], vrel[3];
-  double evdwl = 0.0;
-
-  for (int ii = 0; ii < inum; ii++) {
-    const int i = ilist[ii];
-    const double xtmp = x[i][0];
-    const double ytmp = x[i][1];
-    const double ztmp = x[i][2];
-    const double radi = radius[i];
-    const ContactCoeffs *coeff_i = packed[type[i]];
-    int *touch = firsttouch[i];
-    double *allhistory = firsthistory[i];
-    const int *jlist = firstneigh[i];
-    const int jnum = numneigh[i];
-
-    for (int jj = 0; jj < jnum; jj++) {
-      int j = jlist[jj];
-      double factor_lj = 1.0;
-      if (SPECIAL) {
-        factor_lj = special_lj[sbmask(j)];
-        if (factor_lj == 0.0) continue;
-      }
-      j &= NEIGHMASK;
-
-      del[0] = xtmp - x[j][0];
-      del[1] = ytmp - x[j][1];
-      del[2] = ztmp - x[j][2];
-      const double rsq = del[0] * del[0] + del[1] * del[1] + del[2] * del[2];
-      const double radj = radius[j];
-      const double radsum = radi + radj;
-      double *hist = &allhistory[HIST_SIZE * jj];
-
-      if (rsq >= radsum * radsum) {
-        // a contact that ended: its springs are gone
-        if (touch[jj]) {
-          touch[jj] = 0;
-          for (int k = 0; k < HIST_SIZE; k++) hist[k] = 0.0;
-        }
-        continue;
-      }
-      touch[jj] = 1;
-
-      pair_geometry(del, sqrt(rsq), radi, radj, use_full_arm, g);
-      vrel[0] = v[i][0] - v[j][0];
-      vrel[1] = v[i][1] - v[j][1];
-      vrel[2] = v[i][2] - v[j][2];
-      const ContactCoeffs &c = coeff_i[type[j]];
-      contact_forces(c, g, vrel, omega[i], omega[j], dt, update_history, hist, out);
-
-      double fx = out.f[0], fy = out.f[1], fz = out.f[2];
-      if (SPECIAL && factor_lj != 1.0) {
-        fx *= factor_lj;
-        fy *= factor_lj;
-        fz *= factor_lj;
-        for (int k = 0; k < 3; k++) {
-          out.torque_i[k] *= factor_lj;
-          out.torque_j[k] *= factor_lj;
-        }
-      }
-
-      f[i][0] += fx;
-      f[i][1] += fy;
-      f[i][2] += fz;
-      torque[i][0] += out.torque_i[0];
-      torque[i][1] += out.torque_i[1];
-      torque[i][2] += out.torque_i[2];
-
-      if (NEWTON_PAIR || j < nlocal) {
-        f[j][0] -= fx;
-        f[j][1] -= fy;
-        f[j][2] -= fz;
-        torque[j][0] += out.torque_j[0];
-        torque[j][1] += out.torque_j[1];
-        torque[j][2] += out.torque_j[2];
-      }
-
-      if (EVFLAG) {
-        if (eflag) evdwl = factor_lj * elastic_energy(c, g.delta, hist);
-        ev_tally_xyz(i, j, nlocal, NEWTON_PAIR, evdwl, 0.0, fx, fy, fz, del[0], del[1], del[2]);
-      }
-    }
-  }
+  const auto tally = [this](int i, int j, int nlocal, int newton_pair, double evdwl, double fx,
+                            double fy, double fz, double delx, double dely, double delz) {
+    ev_tally_xyz(i, j, nlocal, newton_pair, evdwl, 0.0, fx, fy, fz, delx, dely, delz);
+  };
+  eval_dispatch(0, list->inum, eflag, atom->f, atom->torque, tally);
 }
 
 /* ----------------------------------------------------------------------
@@ -356,11 +219,14 @@ void PairGranularGRFLOW::init_style()
   dt = update->dt;
 
   // on first init, create the fix that stores the contact history;
-  // it replaces the FixDummy created in the constructor
+  // it replaces the FixDummy created in the constructor.  Never its
+  // accelerator variant (no suffix): the OPENMP one (4Feb2025) negates
+  // every history value when a pair changes owner and ignores
+  // transfer_history(), which would flip the rolling and torsion springs.
 
   if (fix_history == nullptr) {
     auto cmd = fmt::format("{} all NEIGH_HISTORY {}", id_history, (int) HIST_SIZE);
-    fix_history = dynamic_cast<FixNeighHistory *>(modify->replace_fix(id_dummy, cmd, 1));
+    fix_history = dynamic_cast<FixNeighHistory *>(modify->replace_fix(id_dummy, cmd, 0));
     fix_history->pair = this;
   }
   fix_history = dynamic_cast<FixNeighHistory *>(modify->get_fix_by_id(id_history));

@@ -66,7 +66,11 @@ class PairGranularGRFLOW : public Pair {
   int neighprev;    // search start for single()
 
   void allocate();
-  template <int EVFLAG, int NEWTON_PAIR, int SPECIAL> void eval(int);
+  // the pair loop (pair_granular_grflow_eval.h), shared with granular/grflow/omp
+  template <class Tally>
+  void eval_dispatch(int, int, int, double *const *, double *const *, const Tally &);
+  template <int EVFLAG, int NEWTON_PAIR, int SPECIAL, class Tally>
+  void eval(int, int, int, double *const *, double *const *, const Tally &);
   void write_coeffs(FILE *, int, int, bool);
   void find_history(int, int, double *);
 };

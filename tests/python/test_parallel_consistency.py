@@ -1,5 +1,6 @@
 """granular/grflow gives the same trajectory whatever the newton setting,
-atom sorting and number of MPI ranks (up to round-off).
+atom sorting, number of MPI ranks and, for granular/grflow/omp (-sf omp),
+number of OpenMP threads (up to round-off).
 
 Pair owners change when atoms are sorted, migrate between ranks, or with
 newton off; the contact history must then be transferred with the right
@@ -26,12 +27,20 @@ def packing(tmp_path_factory):
     return work, make_packing(work)
 
 
-def final_state(packing, nprocs, newton, sort):
+def final_state(packing, nprocs, newton, sort, threads=0):
+    """threads > 0: granular/grflow/omp (-sf omp) on that many OpenMP threads"""
     work, data = packing
-    dump = work / f"final_np{nprocs}_{newton}_sort{sort}.dump"
-    run_lmp(["-in", os.path.join(DECKS, "consistency.lmp"), "-var", "data", str(data),
-             "-var", "newton", newton, "-var", "sort", str(sort),
-             "-var", "steps", str(STEPS), "-var", "dump", str(dump)], work, nprocs)
+    dump = work / f"final_np{nprocs}_{newton}_sort{sort}_omp{threads}.dump"
+    args = ["-in", os.path.join(DECKS, "consistency.lmp"), "-var", "data", str(data),
+            "-var", "newton", newton, "-var", "sort", str(sort),
+            "-var", "steps", str(STEPS), "-var", "dump", str(dump)]
+    if threads:
+        args += ["-sf", "omp", "-pk", "omp", str(threads)]
+    proc = run_lmp(args, work, nprocs)
+    if threads:
+        # the suffix picked the OpenMP style, with the threads asked for
+        assert "pair granular/grflow/omp" in proc.stdout
+        assert f"{threads} OpenMP thread(s) per MPI task" in proc.stdout
     table = np.loadtxt(dump, skiprows=9)
     return table[:, 1:4], table[:, 4:7]
 
@@ -40,16 +49,21 @@ def rel_diff(a, b):
     return np.abs(a - b).max() / np.abs(b).max()
 
 
-VARIANTS = [(1, "off", 1000), (1, "on", 0), (1, "on", 10), (1, "off", 10),
-            (2, "on", 1000), (2, "off", 1000), (2, "on", 10)]
+# (ranks, newton, sort interval, OpenMP threads of granular/grflow/omp; 0:
+# the serial style).  With threads, each thread sums the forces of its
+# atoms in its own arrays: another summation order, as another rank count.
+VARIANTS = [(1, "off", 1000, 0), (1, "on", 0, 0), (1, "on", 10, 0), (1, "off", 10, 0),
+            (2, "on", 1000, 0), (2, "off", 1000, 0), (2, "on", 10, 0),
+            (1, "on", 1000, 1), (1, "on", 1000, 2), (1, "off", 1000, 2), (1, "on", 10, 2),
+            (2, "on", 1000, 2)]
 
 
-@pytest.mark.parametrize("nprocs,newton,sort", VARIANTS)
-def test_same_trajectory(packing, nprocs, newton, sort):
+@pytest.mark.parametrize("nprocs,newton,sort,threads", VARIANTS)
+def test_same_trajectory(packing, nprocs, newton, sort, threads):
     x_ref, w_ref = final_state(packing, 1, "on", 1000)
-    x, w = final_state(packing, nprocs, newton, sort)
+    x, w = final_state(packing, nprocs, newton, sort, threads)
     dx, dw = rel_diff(x, x_ref), rel_diff(w, w_ref)
-    print(f"[ measured ] np={nprocs} newton={newton} sort={sort}: "
+    print(f"[ measured ] np={nprocs} newton={newton} sort={sort} omp threads={threads}: "
           f"x {dx:.3e}  omega {dw:.3e}")
     # round-off from summation order grows over the run (measured 1e-10 in
     # x, 2e-8 in omega), far below what a wrongly transferred spring history
