@@ -168,9 +168,10 @@ void ComputeGRFLOWNetwork::init()
 }
 
 /* ----------------------------------------------------------------------
-   pair style, region and variables; done at init() and again by
-   compute_vector(), which the library interface can call on a compute
-   that was defined after the last run and never initialized
+   pair style, region, wall fixes and variables; done at init() and again
+   by compute_vector() between runs, where the library interface can call
+   it on a compute that was defined after the last run and never
+   initialized
 ------------------------------------------------------------------------- */
 
 void ComputeGRFLOWNetwork::check_setup()
@@ -275,7 +276,10 @@ void ComputeGRFLOWNetwork::set_inside(double &volume)
 
 void ComputeGRFLOWNetwork::compute_vector()
 {
-  check_setup();
+  // during a run or minimization init() has done the checks and found the
+  // walls (fixes cannot come or go within a run); between runs (library
+  // calls, variables) they are done here, as init() may not have been
+  if (update->whichflag == 0) check_setup();
   Pair *pair = force->pair;
   NeighList *list = pair->list;
   if (!list || !list->numneigh)
