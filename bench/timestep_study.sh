@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Does the timestep change the results?  The whole protocol (preparation
+# and shear, inputs/cyclic_shear.lmp) for every seed and dt_factor given,
+# each run on one core, then analysis/make_figures.py on each, and one
+# table of the quantities the paper reports (bench/timestep_table.py).
+#   bash bench/timestep_study.sh OUTDIR "SEEDS" "FACTORS" [-var NAME VALUE ...]
+# e.g. the quick preset at three timesteps over three seeds:
+#   bash bench/timestep_study.sh runs/dt "5827 1 2" "0.1 0.2 0.3" -var preset quick
+# Environment: LMP (default build/lmp), CPU (taskset core, default 0).
+# A run directory that already has figures/summary.json is not run again.
+# The decks are frozen into OUTDIR/inputs at the first call (edits of
+# inputs/ during a study do not reach its runs); delete it to refreeze.
+set -euo pipefail
+top=$(cd "$(dirname "$0")/.." && pwd)
+out=${1:?usage: timestep_study.sh OUTDIR SEEDS FACTORS [-var ...]}
+seeds=${2:?SEEDS}
+factors=${3:?FACTORS}
+shift 3
+lmp=${LMP:-$top/build/lmp}
+mkdir -p "$out"
+[ -d "$out/inputs" ] || cp -r "$top/inputs" "$out/inputs"
+inputs=$(cd "$out/inputs" && pwd)
+for seed in $seeds; do
+  for f in $factors; do
+    dir=$out/s${seed}_f$f
+    [ -f "$dir/figures/summary.json" ] && continue
+    rm -rf "$dir"
+    start=$(date +%s.%N)
+    OMP_NUM_THREADS=1 taskset -c "${CPU:-0}" "$lmp" -log none -screen none \
+      -in "$inputs/cyclic_shear.lmp" -var inputs "$inputs" -var outdir "$dir" \
+      -var seed "$seed" -var dt_factor "$f" "$@"
+    end=$(date +%s.%N)
+    echo "$end - $start" | bc > "$dir/wall_seconds.txt"
+    /usr/bin/python3 "$top/analysis/make_figures.py" "$dir" > "$dir/figures.log" 2>&1
+    echo "seed $seed dt_factor $f: $(cat "$dir/wall_seconds.txt") s"
+  done
+done
+/usr/bin/python3 "$top/bench/timestep_table.py" "$out"/s*_f*
