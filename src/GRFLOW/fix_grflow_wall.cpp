@@ -196,11 +196,8 @@ void FixGRFLOWWall::post_force(int vflag)
   for (auto &w : walls) w.force[0] = w.force[1] = w.force[2] = 0.0;
   contact_step = update->ntimestep;
 
-  // most atoms touch no wall: for them only the arms are written (the
-  // forces of contact[] are read only where the arm is > 0) and a history
-  // is cleared only if it holds a contact that just ended
   for (int i = 0; i < nlocal; i++) {
-    for (int iw = 0; iw < NWALL; iw++) contact[i][4 * iw] = 0.0;
+    for (int m = 0; m < NCONTACT; m++) contact[i][m] = 0.0;
     if (!(mask[i] & groupbit)) continue;
     const double rad = radius[i];
 
@@ -214,11 +211,7 @@ void FixGRFLOWWall::post_force(int vflag)
         error->one(FLERR, "Fix grflow/wall {}: atom {} crossed the {} wall (z = {}, wall at {})",
                    id, tag[i], iw == LO ? "zlo" : "zhi", x[i][2], w.z);
       if (gap >= rad) {
-        for (int k = 0; k < HIST_SIZE; k++)
-          if (hist[k] != 0.0) {
-            for (int m = 0; m < HIST_SIZE; m++) hist[m] = 0.0;
-            break;
-          }
+        for (int k = 0; k < HIST_SIZE; k++) hist[k] = 0.0;
         continue;
       }
 

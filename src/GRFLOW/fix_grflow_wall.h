@@ -74,8 +74,7 @@ class FixGRFLOWWall : public Fix {
   }
 
   // contact of atom i with wall w on this step: arm (a - delta/2, 0 if no
-  // force-bearing contact) and force on the atom (set only where the arm
-  // is > 0); for compute grflow/network
+  // force-bearing contact) and force on the atom; for compute grflow/network
   double contact_arm(int i, int w) const { return contact[i][4 * w]; }
   const double *contact_force(int i, int w) const { return &contact[i][4 * w + 1]; }
   double normal_sign(int w) const { return w == LO ? 1.0 : -1.0; }
