@@ -39,7 +39,7 @@ if [ -z "$last" ]; then
 fi
 points=(0)
 for f in $(ls "$rundir" | sed -n 's/^shear\.restart\.\([0-9]*\)$/\1/p' | sort -n); do
-  [ "$f" -lt "$last" ] && points+=("$f")
+  [ "$f" -gt 0 ] && [ "$f" -lt "$last" ] && points+=("$f")    # shear.restart.0: the start, as prep.restart
 done
 sel=()
 for i in "${!points[@]}"; do

@@ -6,7 +6,13 @@
 #   bash bench/timestep_study.sh OUTDIR "SEEDS" "FACTORS" [-var NAME VALUE ...]
 # e.g. the quick preset at three timesteps over three seeds:
 #   bash bench/timestep_study.sh runs/dt "5827 1 2" "0.1 0.2 0.3" -var preset quick
-# Environment: LMP (default build/lmp), CPU (taskset core, default 0).
+# Environment: LMP (default build/lmp), CPU (taskset core, default 0;
+# with NP=2, mpirun places the ranks).
+# Shear stage only, from the preparations of an earlier study:
+#   PREP_FROM=runs/dt PREP_FACTOR=0.1 bash bench/timestep_study.sh runs/dt-shear ...
+# takes PREP_FROM/s<seed>_f<PREP_FACTOR>/prep.restart (and prep.json) for
+# seed <seed>, so that only the shear stage's timestep differs; NP=2 runs
+# it on 2 MPI ranks (another summation order: the chaotic scatter).
 # A run directory that already has figures/summary.json is not run again.
 # The decks are frozen into OUTDIR/inputs at the first call (edits of
 # inputs/ during a study do not reach its runs); delete it to refreeze.
@@ -25,10 +31,21 @@ for seed in $seeds; do
     dir=$out/s${seed}_f$f
     [ -f "$dir/figures/summary.json" ] && continue
     rm -rf "$dir"
+    stage=()
+    if [ -n "${PREP_FROM:-}" ]; then
+      mkdir -p "$dir/snapshots"
+      src=$(cd "$PREP_FROM/s${seed}_f${PREP_FACTOR:-0.1}" && pwd)
+      ln -s "$src/prep.restart" "$dir/prep.restart"
+      cp "$src/prep.json" "$src/snapshots/atoms.prep.txt" "$dir/" 2> /dev/null || true
+      mv "$dir/atoms.prep.txt" "$dir/snapshots/" 2> /dev/null || true
+      stage=(-var stage shear)
+    fi
+    cmd=(taskset -c "${CPU:-0}" "$lmp")
+    [ "${NP:-1}" -gt 1 ] && cmd=(mpirun --allow-run-as-root --oversubscribe -np "$NP" "$lmp")
     start=$(date +%s.%N)
-    OMP_NUM_THREADS=1 taskset -c "${CPU:-0}" "$lmp" -log none -screen none \
+    OMP_NUM_THREADS=1 "${cmd[@]}" -log none -screen none \
       -in "$inputs/cyclic_shear.lmp" -var inputs "$inputs" -var outdir "$dir" \
-      -var seed "$seed" -var dt_factor "$f" "$@"
+      -var seed "$seed" -var dt_factor "$f" "${stage[@]}" "$@"
     end=$(date +%s.%N)
     echo "$end - $start" | bc > "$dir/wall_seconds.txt"
     /usr/bin/python3 "$top/analysis/make_figures.py" "$dir" > "$dir/figures.log" 2>&1
