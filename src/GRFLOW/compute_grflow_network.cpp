@@ -50,8 +50,8 @@ enum { INSIDE, NCONTACTS };
 /* ---------------------------------------------------------------------- */
 
 ComputeGRFLOWNetwork::ComputeGRFLOWNetwork(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), zlo_str(nullptr), zhi_str(nullptr), idregion(nullptr),
-    region(nullptr), volume_str(nullptr), inside(nullptr), ncontact(nullptr)
+    Compute(lmp, narg, arg), zlo_str(nullptr), zhi_str(nullptr), idregion(nullptr), region(nullptr),
+    volume_str(nullptr), inside(nullptr), ncontact(nullptr)
 {
   cmax = 12;
   tau_a = 0;
@@ -97,8 +97,10 @@ ComputeGRFLOWNetwork::ComputeGRFLOWNetwork(LAMMPS *lmp, int narg, char **arg) :
       const int a = c.size() == 2 ? c[0] - 'x' : -1;
       const int b = c.size() == 2 ? c[1] - 'x' : -1;
       if (a < 0 || a > 2 || b < 0 || b > 2 || a == b)
-        error->all(FLERR, "Compute grflow/network shear must be two different axes "
-                   "(xy, xz, yz, ...), got {}", c);
+        error->all(FLERR,
+                   "Compute grflow/network shear must be two different axes "
+                   "(xy, xz, yz, ...), got {}",
+                   c);
       tau_a = a;
       tau_b = b;
       iarg += 2;
@@ -179,23 +181,29 @@ void ComputeGRFLOWNetwork::check_setup()
   Pair *pair = force->pair;
   if (!pair) error->all(FLERR, "Compute grflow/network requires a pair style");
   if (!pair->single_enable || !pair->finitecutflag || !pair->svector || pair->single_extra < 3)
-    error->all(FLERR, "Compute grflow/network requires a granular pair style with single() "
+    error->all(FLERR,
+               "Compute grflow/network requires a granular pair style with single() "
                "giving the sliding force in svector[0-2] (granular/grflow, granular, gran/*), "
-               "not {}", force->pair_style);
+               "not {}",
+               force->pair_style);
 
   if (idregion) {
     region = domain->get_region_by_id(idregion);
     if (!region) error->all(FLERR, "Region {} for compute grflow/network does not exist", idregion);
     if (!volume_str && (strcmp(region->style, "block") != 0 || !region->interior))
-      error->all(FLERR, "Compute grflow/network region {} is not an inside block: give its "
-                 "volume with the volume keyword", idregion);
+      error->all(FLERR,
+                 "Compute grflow/network region {} is not an inside block: give its "
+                 "volume with the volume keyword",
+                 idregion);
   }
   walls.clear();
   for (auto *ifix : modify->get_fix_by_style("^grflow/wall$")) {
     auto *wfix = dynamic_cast<FixGRFLOWWall *>(ifix);
     if (!wfix)
-      error->all(FLERR, "Compute grflow/network cannot read fix {}: it comes from another build "
-                 "of GRFLOW (plugin and built-in styles mixed)", ifix->id);
+      error->all(FLERR,
+                 "Compute grflow/network cannot read fix {}: it comes from another build "
+                 "of GRFLOW (plugin and built-in styles mixed)",
+                 ifix->id);
     walls.push_back(wfix);
   }
 
@@ -262,8 +270,10 @@ void ComputeGRFLOWNetwork::set_inside(double &volume)
     for (int i = 0; i < nlocal; i++) {
       double z = x[i][2];
       if (zperiodic) {
-        if (z < boxlo) z += zprd;
-        else if (z >= boxhi) z -= zprd;
+        if (z < boxlo)
+          z += zprd;
+        else if (z >= boxhi)
+          z -= zprd;
       }
       inside[i] = ((mask[i] & groupbit) && z >= lo && z < hi) ? 1.0 : 0.0;
     }
@@ -283,7 +293,8 @@ void ComputeGRFLOWNetwork::compute_vector()
   Pair *pair = force->pair;
   NeighList *list = pair->list;
   if (!list || !list->numneigh)
-    error->all(FLERR, "Compute grflow/network needs the pair style's neighbor list: "
+    error->all(FLERR,
+               "Compute grflow/network needs the pair style's neighbor list: "
                "use it after a run (run 0 will do)");
   // the wall contacts are those its post_force() recorded on this step: a
   // fix that invokes the compute in its setup() before the wall fix's
@@ -291,11 +302,15 @@ void ComputeGRFLOWNetwork::compute_vector()
   for (auto *wfix : walls) {
     if (wfix->contacts_step() == update->ntimestep) continue;
     if (update->whichflag == 2)
-      error->all(FLERR, "Compute grflow/network {} cannot be used during a minimization: fix "
-                 "grflow/wall {} records no wall contacts there", id, wfix->id);
-    error->all(FLERR, "Compute grflow/network {}: fix grflow/wall {} has no contacts for step "
+      error->all(FLERR,
+                 "Compute grflow/network {} cannot be used during a minimization: fix "
+                 "grflow/wall {} records no wall contacts there",
+                 id, wfix->id);
+    error->all(FLERR,
+               "Compute grflow/network {}: fix grflow/wall {} has no contacts for step "
                "{}: define it before the fixes that invoke this compute, and use the compute "
-               "after a run (run 0 will do)", id, wfix->id, update->ntimestep);
+               "after a run (run 0 will do)",
+               id, wfix->id, update->ntimestep);
   }
   invoked_vector = update->ntimestep;
 

@@ -45,30 +45,36 @@ class ComputeGRFLOWNetwork : public Compute {
   double memory_usage() override;
 
   // reference pressure for r_u, for fixes that capture it (e.g. when shear starts)
-  void set_p0(double value) { p0 = value; p0flag = 1; }
+  void set_p0(double value)
+  {
+    p0 = value;
+    p0flag = 1;
+  }
 
   // positions of the output vector entries (0-based)
+  // clang-format off
   enum {
     SXX, SYY, SZZ, SXY, SXZ, SYZ, PRESS, TAU, QDEV, SNORM, RU, NP, NFLOAT, NCONTACT, ZG,
     ZPLAIN, AC, SC, AXX, AYY, AZZ, AXY, AXZ, AYZ, VOLUME, PC0
   };
+  // clang-format on
 
  private:
-  int cmax;                    // P_c for c = 0..cmax (last bin: cmax or more)
-  int tau_a, tau_b;            // tau = -(sigma_ab + sigma_ba)/2
-  double slab;                 // central fraction of the height (no region)
-  char *zlo_str, *zhi_str;     // sample bounds in z: number or v_name
+  int cmax;                   // P_c for c = 0..cmax (last bin: cmax or more)
+  int tau_a, tau_b;           // tau = -(sigma_ab + sigma_ba)/2
+  double slab;                // central fraction of the height (no region)
+  char *zlo_str, *zhi_str;    // sample bounds in z: number or v_name
   char *idregion;
   class Region *region;
-  char *volume_str;            // volume of a non-block region: number or v_name
+  char *volume_str;    // volume of a non-block region: number or v_name
   double p0;
   int p0flag, p0first;
 
   std::vector<class FixGRFLOWWall *> walls;
 
   int nmax;
-  double *inside;     // 1 if the atom is in the group and the sub-volume
-  double *ncontact;   // force-bearing contacts per atom
+  double *inside;      // 1 if the atom is in the group and the sub-volume
+  double *ncontact;    // force-bearing contacts per atom
   int commflag;
 
   void check_setup();

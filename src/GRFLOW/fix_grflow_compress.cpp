@@ -69,10 +69,12 @@ FixGRFLOWCompress::FixGRFLOWCompress(LAMMPS *lmp, int narg, char **arg) :
     elastic_var(nullptr), ivar_elastic(-1), wall(nullptr), network(nullptr), pe(nullptr)
 {
   if (narg < 7)
-    error->all(FLERR, "Illegal fix grflow/compress command: expected wall-ID compute-ID "
+    error->all(FLERR,
+               "Illegal fix grflow/compress command: expected wall-ID compute-ID "
                "p_target rate_max [keyword value ...]");
   if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag)
-    error->all(FLERR, "Fix grflow/compress requires atom attributes radius, rmass and omega "
+    error->all(FLERR,
+               "Fix grflow/compress requires atom attributes radius, rmass and omega "
                "(atom_style sphere)");
   if (domain->triclinic) error->all(FLERR, "Fix grflow/compress requires an orthogonal box");
   if (!domain->xperiodic || !domain->yperiodic)
@@ -99,7 +101,8 @@ FixGRFLOWCompress::FixGRFLOWCompress(LAMMPS *lmp, int narg, char **arg) :
     if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, "fix grflow/compress " + kw, error);
     if (kw == "elastic") {
       if (!utils::strmatch(arg[iarg + 1], "^v_"))
-        error->all(FLERR, "Fix grflow/compress elastic takes an equal-style variable v_name, got {}",
+        error->all(FLERR,
+                   "Fix grflow/compress elastic takes an equal-style variable v_name, got {}",
                    arg[iarg + 1]);
       delete[] elastic_var;
       elastic_var = utils::strdup(arg[iarg + 1] + 2);
@@ -290,8 +293,8 @@ void FixGRFLOWCompress::measure()
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     const double vv = v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2];
-    const double ww = omega[i][0] * omega[i][0] + omega[i][1] * omega[i][1] +
-        omega[i][2] * omega[i][2];
+    const double ww =
+        omega[i][0] * omega[i][0] + omega[i][1] * omega[i][1] + omega[i][2] * omega[i][2];
     kelocal += rmass[i] * (vv + 0.4 * radius[i] * radius[i] * ww);
   }
   MPI_Allreduce(&kelocal, &ke, 1, MPI_DOUBLE, MPI_SUM, world);
@@ -335,7 +338,7 @@ void FixGRFLOWCompress::damp_overshoot(int a, double err)
     error->warning(FLERR,
                    "Fix {} grflow/compress: sigma_{}{} overshot the target {} servo updates in "
                    "a row at step {}; its gain factor is halved to {}",
-                   id, "xyz"[a], "xyz"[a], NOVERSHOOT, update->ntimestep, factor[a]);
+                   id, "xyz"[a], "xyz"[a], NOVERSHOOT, update -> ntimestep, factor[a]);
 }
 
 /* ----------------------------------------------------------------------

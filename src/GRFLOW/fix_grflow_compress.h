@@ -38,10 +38,12 @@ class FixGRFLOWCompress : public Fix {
   void restart(char *) override;
 
   // output vector (0-based)
+  // clang-format off
   enum {
-    CONVERGED, SXX, SYY, SZZ, ERRMAX, KE, EEL, RATIO, RATE_X, RATE_Y, RATE_Z, VOLUME, VOID,
-    LX, LY, HEIGHT, FACTOR_X, FACTOR_Y, FACTOR_Z, NOUT
+    CONVERGED, SXX, SYY, SZZ, ERRMAX, KE, EEL, RATIO, RATE_X, RATE_Y, RATE_Z, VOLUME, VOID, LX, LY,
+    HEIGHT, FACTOR_X, FACTOR_Y, FACTOR_Z, NOUT
   };
+  // clang-format on
 
  private:
   char *id_wall, *id_network, *id_pe;

@@ -51,7 +51,8 @@ FixGRFLOWShear::FixGRFLOWShear(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), id_wall(nullptr), id_network(nullptr), wall(nullptr), network(nullptr)
 {
   if (narg < 7)
-    error->all(FLERR, "Illegal fix grflow/shear command: expected wall-ID compute-ID vx tau_amp "
+    error->all(FLERR,
+               "Illegal fix grflow/shear command: expected wall-ID compute-ID vx tau_amp "
                "[keyword value ...]");
   id_wall = utils::strdup(arg[3]);
   id_network = utils::strdup(arg[4]);
@@ -93,7 +94,8 @@ FixGRFLOWShear::FixGRFLOWShear(LAMMPS *lmp, int narg, char **arg) :
       progress = utils::logical(FLERR, arg[iarg + 1], false, lmp);
     } else if (kw == "glue") {
       iglue = group->find(arg[iarg + 1]);
-      if (iglue < 0) error->all(FLERR, "Fix grflow/shear glue group {} does not exist", arg[iarg + 1]);
+      if (iglue < 0)
+        error->all(FLERR, "Fix grflow/shear glue group {} does not exist", arg[iarg + 1]);
       gluebit = group->bitmask[iglue];
       glue_name = arg[iarg + 1];
     } else {
@@ -174,8 +176,10 @@ void FixGRFLOWShear::setup(int /*vflag*/)
     network->compute_vector();
     p0 = network->vector[ComputeGRFLOWNetwork::PRESS];
     if (p0 <= 0.0)
-      error->all(FLERR, "Fix grflow/shear: the mean stress is {} when shearing starts; "
-                 "it must be > 0 to define r_u", p0);
+      error->all(FLERR,
+                 "Fix grflow/shear: the mean stress is {} when shearing starts; "
+                 "it must be > 0 to define r_u",
+                 p0);
     started = 1;
     direction = 1;
   }
@@ -345,8 +349,7 @@ double FixGRFLOWShear::compute_vector(int n)
     case DONE: {
       int done = 0;
       if (stop_cycles > 0.0 && cycles >= stop_cycles) done = 1;
-      if (stop_cycles_after_il > 0.0 && step_il >= 0 && cycles_il >= stop_cycles_after_il)
-        done = 1;
+      if (stop_cycles_after_il > 0.0 && step_il >= 0 && cycles_il >= stop_cycles_after_il) done = 1;
       if (stop_gamma > 0.0 && wall && fabs(xw / height()) >= stop_gamma) done = 1;
       return done;
     }
@@ -360,8 +363,14 @@ double FixGRFLOWShear::compute_vector(int n)
 
 void FixGRFLOWShear::write_restart(FILE *fp)
 {
-  double list[NRESTART] = {(double) started, (double) direction, (double) reversals,
-                           (double) reversals_il, (double) step_il, p0, time_il, (double) await_zero};
+  double list[NRESTART] = {(double) started,
+                           (double) direction,
+                           (double) reversals,
+                           (double) reversals_il,
+                           (double) step_il,
+                           p0,
+                           time_il,
+                           (double) await_zero};
   if (comm->me == 0) {
     int size = NRESTART * sizeof(double);
     fwrite(&size, sizeof(int), 1, fp);

@@ -39,10 +39,12 @@ class FixGRFLOWShear : public Fix {
   void restart(char *) override;
 
   // output vector (0-based)
+  // clang-format off
   enum {
-    DIRECTION, REVERSALS, XWALL, GAMMA, TAU, PRESS, RU, P0, STEP_IL, TIME_IL, CYCLES_IL,
-    CYCLES, DONE, EVENT, NOUT
+    DIRECTION, REVERSALS, XWALL, GAMMA, TAU, PRESS, RU, P0, STEP_IL, TIME_IL, CYCLES_IL, CYCLES,
+    DONE, EVENT, NOUT
   };
+  // clang-format on
 
  private:
   char *id_wall, *id_network;

@@ -51,7 +51,8 @@ FixGRFLOWWall::FixGRFLOWWall(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), history(nullptr), contact(nullptr), contact_step(-1)
 {
   if (!atom->radius_flag || !atom->omega_flag || !atom->torque_flag)
-    error->all(FLERR, "Fix grflow/wall requires atom attributes radius, omega and torque "
+    error->all(FLERR,
+               "Fix grflow/wall requires atom attributes radius, omega and torque "
                "(atom_style sphere)");
 
   int iarg = parse_coeffs(lmp, "fix grflow/wall", narg, arg, 3, true, coeff_value);
@@ -87,8 +88,10 @@ FixGRFLOWWall::FixGRFLOWWall(LAMMPS *lmp, int narg, char **arg) :
     } else {
       for (const char *name : COEFF_NAMES)
         if (kw == name || kw == "rolling" || kw == "torsion")
-          error->all(FLERR, "Fix grflow/wall contact keyword {} must come right after kn cn, "
-                     "before zlo, zhi and velocity_arm", kw);
+          error->all(FLERR,
+                     "Fix grflow/wall contact keyword {} must come right after kn cn, "
+                     "before zlo, zhi and velocity_arm",
+                     kw);
       error->all(FLERR, "Unknown fix grflow/wall keyword: {}", kw);
     }
   }
@@ -96,8 +99,7 @@ FixGRFLOWWall::FixGRFLOWWall(LAMMPS *lmp, int narg, char **arg) :
     error->all(FLERR, "Fix grflow/wall needs a wall: zlo and/or zhi");
   if (walls[LO].active && walls[HI].active && walls[HI].z <= walls[LO].z)
     error->all(FLERR, "Fix grflow/wall zhi {} must be above zlo {}", walls[HI].z, walls[LO].z);
-  if (domain->zperiodic)
-    error->all(FLERR, "Fix grflow/wall needs a non-periodic z boundary");
+  if (domain->zperiodic) error->all(FLERR, "Fix grflow/wall needs a non-periodic z boundary");
 
   // forces are sums over atoms (extensive), positions and displacements not
   vector_flag = 1;
@@ -295,11 +297,12 @@ int FixGRFLOWWall::modify_param(int narg, char **arg)
   // histories are kept
   for (int k = 0; k < NCOEFF; k++) {
     if (strcmp(arg[0], COEFF_NAMES[k]) != 0) continue;
-    if (narg < 2) utils::missing_cmd_args(FLERR, fmt::format("fix_modify {} {}", id, arg[0]), error);
+    if (narg < 2)
+      utils::missing_cmd_args(FLERR, fmt::format("fix_modify {} {}", id, arg[0]), error);
     const double value = utils::numeric(FLERR, arg[1], false, lmp);
     if (value < 0.0 || (k == KN && value == 0.0))
-      error->all(FLERR, "fix_modify {} {} must be {}, got {}", id, arg[0],
-                 k == KN ? "> 0" : ">= 0", value);
+      error->all(FLERR, "fix_modify {} {} must be {}, got {}", id, arg[0], k == KN ? "> 0" : ">= 0",
+                 value);
     coeff_value[k] = value;
     pack_coeffs(coeff_value, coeff);
     return 2;
@@ -323,8 +326,7 @@ int FixGRFLOWWall::modify_param(int narg, char **arg)
   if (strcmp(arg[2], "z") == 0) {
     w.z = utils::numeric(FLERR, arg[3], false, lmp);
     if (walls[LO].active && walls[HI].active && walls[HI].z <= walls[LO].z)
-      error->all(FLERR, "fix_modify {}: zhi {} must be above zlo {}", id, walls[HI].z,
-                 walls[LO].z);
+      error->all(FLERR, "fix_modify {}: zhi {} must be above zlo {}", id, walls[HI].z, walls[LO].z);
     return 4;
   }
   error->all(FLERR, "fix_modify {} wall {}: expected vel or z, got {}", id, arg[1], arg[2]);

@@ -60,10 +60,10 @@ class FixGRFLOWWall : public Fix {
   // a flat wall normal to z: "lo" pushes up (+z), "hi" pushes down (-z)
   struct Wall {
     int active;
-    double z;         // position
-    double v[3];      // velocity
-    double disp[2];   // accumulated x, y displacement
-    double force[3];  // force of the particles on the wall, this step
+    double z;           // position
+    double v[3];        // velocity
+    double disp[2];     // accumulated x, y displacement
+    double force[3];    // force of the particles on the wall, this step
   };
   const Wall &wall(int w) const { return walls[w]; }
   void set_velocity(int w, double vx, double vy, double vz)

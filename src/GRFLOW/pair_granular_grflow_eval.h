@@ -120,11 +120,6 @@ void PairGranularGRFLOW::eval(int iifrom, int iito, int eflag, double *const *f,
     const int *jlist = firstneigh[i];
     const int jnum = numneigh[i];
 
-    // force and torque on i summed here, written once after the loop (f[j]
-    // and torque[j] may alias f[i], so the compiler cannot keep them in
-    // registers itself)
-    double fi[3] = {0.0, 0.0, 0.0}, ti[3] = {0.0, 0.0, 0.0};
-
     for (int jj = 0; jj < jnum; jj++) {
       int j = jlist[jj];
       double factor_lj = 1.0;
@@ -170,12 +165,15 @@ void PairGranularGRFLOW::eval(int iifrom, int iito, int eflag, double *const *f,
         }
       }
 
-      fi[0] += fx;
-      fi[1] += fy;
-      fi[2] += fz;
-      ti[0] += out.torque_i[0];
-      ti[1] += out.torque_i[1];
-      ti[2] += out.torque_i[2];
+      // f[i] is summed contact by contact (not in locals written once per
+      // i): the summation order, and so the trajectories, of the serial
+      // style before the /omp variant shared this loop
+      f[i][0] += fx;
+      f[i][1] += fy;
+      f[i][2] += fz;
+      torque[i][0] += out.torque_i[0];
+      torque[i][1] += out.torque_i[1];
+      torque[i][2] += out.torque_i[2];
 
       if (NEWTON_PAIR || j < nlocal) {
         f[j][0] -= fx;
@@ -191,13 +189,6 @@ void PairGranularGRFLOW::eval(int iifrom, int iito, int eflag, double *const *f,
         tally(i, j, nlocal, NEWTON_PAIR, evdwl, fx, fy, fz, del[0], del[1], del[2]);
       }
     }
-
-    f[i][0] += fi[0];
-    f[i][1] += fi[1];
-    f[i][2] += fi[2];
-    torque[i][0] += ti[0];
-    torque[i][1] += ti[1];
-    torque[i][2] += ti[2];
   }
 }
 
