@@ -477,6 +477,17 @@ def test_contact_ratios_reach_particles_and_walls(tmp_path, deck):
     ({"resume": "yes", "stage": "prep"}, "cannot go with stage prep"),
     ({"agitate_dilation": "0.99"}, "agitate_dilation 0.99 must be >= 1"),
     ({"kt_kn": "-0.5"}, "kt must be >= 0, got -500000"),
+    ({"N": "0"}, "N 0 must be a whole number >= 1"),
+    ({"N": "100.5"}, "N 100.5 must be a whole number >= 1"),
+    ({"N": "many"}, "If command boolean can only operate on numbers"),
+    ({"d_min": "2e-3", "d_max": "1e-3"}, "need 0 < d_min <= d_max"),
+    ({"dt_factor": "0"}, "dt_factor 0 must be > 0"),
+    ({"dt_factor_shear": "-0.1"}, "dt_factor_shear -0.1 must be > 0"),
+    ({"glue_gap": "-1e-4"}, "glue_gap -1e-4 must be >= 0"),
+    ({"tau_amp": "0"}, "tau_amp 0 must be > 0"),
+    ({"v_x": "0"}, "v_x 0 must be > 0"),
+    ({"skin_factor": "0"}, "skin_factor 0 must be > 0"),
+    ({"check_every": "0"}, "each must be >= 1"),
 ])
 def test_bad_parameters(tmp_path, var, expect):
     proc = subprocess.run(lmp_cmd(tmp_path / "bad", screen=True, **var), capture_output=True,
