@@ -198,22 +198,42 @@ void FixGRFLOWWall::post_force(int vflag)
   for (auto &w : walls) w.force[0] = w.force[1] = w.force[2] = 0.0;
   contact_step = update->ntimestep;
 
+  // contact[i][4 w]: the arm of a force-bearing contact of atom i with wall
+  // w on this step, -1 for a touching one without force, 0 for none (and
+  // -1 after an atom came from another rank or a restart file: unknown).
+  // An atom farther than its radius from every wall touches none; for it
+  // only its arms are cleared, and a wall's history only if the atom
+  // touched that wall on the step before (the contact just ended).  Most
+  // atoms are such atoms on most steps.
+  const bool lo_on = walls[LO].active, hi_on = walls[HI].active;
+  const double zlo = walls[LO].z, zhi = walls[HI].z;
   for (int i = 0; i < nlocal; i++) {
-    for (int m = 0; m < NCONTACT; m++) contact[i][m] = 0.0;
-    if (!(mask[i] & groupbit)) continue;
+    double *ci = contact[i];
     const double rad = radius[i];
+    const double z = x[i][2];
+    if (!(mask[i] & groupbit) || ((!lo_on || z - zlo >= rad) && (!hi_on || zhi - z >= rad))) {
+      for (int iw = 0; iw < NWALL; iw++)
+        if (ci[4 * iw] != 0.0) {
+          ci[4 * iw] = 0.0;
+          for (int k = 0; k < HIST_SIZE; k++) history[i][iw * HIST_SIZE + k] = 0.0;
+        }
+      continue;
+    }
 
     for (int iw = 0; iw < NWALL; iw++) {
       Wall &w = walls[iw];
       if (!w.active) continue;
       double *hist = &history[i][iw * HIST_SIZE];
+      const bool was_touching = (ci[4 * iw] != 0.0);
+      ci[4 * iw] = 0.0;
       const double sign = normal_sign(iw);
-      const double gap = sign * (x[i][2] - w.z);    // centre to wall, along n
+      const double gap = sign * (z - w.z);    // centre to wall, along n
       if (gap <= 0.0)
         error->one(FLERR, "Fix grflow/wall {}: atom {} crossed the {} wall (z = {}, wall at {})",
-                   id, tag[i], iw == LO ? "zlo" : "zhi", x[i][2], w.z);
+                   id, tag[i], iw == LO ? "zlo" : "zhi", z, w.z);
       if (gap >= rad) {
-        for (int k = 0; k < HIST_SIZE; k++) hist[k] = 0.0;
+        if (was_touching)
+          for (int k = 0; k < HIST_SIZE; k++) hist[k] = 0.0;
         continue;
       }
 
@@ -237,8 +257,10 @@ void FixGRFLOWWall::post_force(int vflag)
         w.force[k] -= out.f[k];
       }
       if (out.fn > 0.0) {
-        contact[i][4 * iw] = g.arm_i;
-        for (int k = 0; k < 3; k++) contact[i][4 * iw + 1 + k] = out.f[k];
+        ci[4 * iw] = g.arm_i;
+        for (int k = 0; k < 3; k++) ci[4 * iw + 1 + k] = out.f[k];
+      } else {
+        ci[4 * iw] = -1.0;
       }
 
       // virial of the contact, branch vector from the contact point to the
@@ -416,7 +438,7 @@ int FixGRFLOWWall::pack_exchange(int i, double *buf)
 int FixGRFLOWWall::unpack_exchange(int nlocal, double *buf)
 {
   for (int m = 0; m < NHIST; m++) history[nlocal][m] = buf[m];
-  for (int m = 0; m < NCONTACT; m++) contact[nlocal][m] = 0.0;
+  mark_unknown(nlocal);
   return NHIST;
 }
 
@@ -439,6 +461,20 @@ void FixGRFLOWWall::unpack_restart(int nlocal, int nth)
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
   m++;
   for (int k = 0; k < NHIST; k++) history[nlocal][k] = extra[nlocal][m++];
+  mark_unknown(nlocal);
+}
+
+/* ----------------------------------------------------------------------
+   an atom whose wall histories came from elsewhere: no force-bearing
+   contact on record, but the next post_force() clears a history of a
+   wall it does not touch
+------------------------------------------------------------------------- */
+
+void FixGRFLOWWall::mark_unknown(int i)
+{
+  for (int m = 0; m < NCONTACT; m++) contact[i][m] = 0.0;
+  for (int w = 0; w < NWALL; w++)
+    if (walls[w].active) contact[i][4 * w] = -1.0;
 }
 
 /* ---------------------------------------------------------------------- */

@@ -73,8 +73,9 @@ class FixGRFLOWWall : public Fix {
     walls[w].v[2] = vz;
   }
 
-  // contact of atom i with wall w on this step: arm (a - delta/2, 0 if no
-  // force-bearing contact) and force on the atom; for compute grflow/network
+  // contact of atom i with wall w on this step: arm (a - delta/2; <= 0 if
+  // no force-bearing contact) and force on the atom (set only where the arm
+  // is > 0); for compute grflow/network
   double contact_arm(int i, int w) const { return contact[i][4 * w]; }
   const double *contact_force(int i, int w) const { return &contact[i][4 * w + 1]; }
   double normal_sign(int w) const { return w == LO ? 1.0 : -1.0; }
@@ -91,8 +92,10 @@ class FixGRFLOWWall : public Fix {
   int force_flag;
 
   double **history;    // per atom: 7 values per wall
-  double **contact;    // per atom: arm, fx, fy, fz per wall (this step)
+  double **contact;    // per atom: arm, fx, fy, fz per wall (this step, see post_force())
   bigint contact_step;
+
+  void mark_unknown(int);
 };
 
 }    // namespace LAMMPS_NS
