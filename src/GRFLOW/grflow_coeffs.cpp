@@ -68,11 +68,19 @@ int GRFLOW::parse_coeffs(LAMMPS *lmp, const std::string &cmd, int narg, char **a
     iarg += 2;
   }
 
-  if (value[KN] <= 0.0) error->all(FLERR, "{}: kn must be > 0, got {}", cmd, value[KN]);
-  for (int k = 1; k < NCOEFF; k++)
-    if (value[k] < 0.0 || !std::isfinite(value[k]))
-      error->all(FLERR, "{}: {} must be >= 0, got {}", cmd, COEFF_NAMES[k], value[k]);
+  check_coeffs(lmp, cmd, value);
   return iarg;
+}
+
+void GRFLOW::check_coeffs(LAMMPS *lmp, const std::string &where, const double *value)
+{
+  for (int k = 0; k < NCOEFF; k++)
+    if (!std::isfinite(value[k]))
+      lmp->error->all(FLERR, "{}: {} must be finite, got {}", where, COEFF_NAMES[k], value[k]);
+  if (value[KN] <= 0.0) lmp->error->all(FLERR, "{}: kn must be > 0, got {}", where, value[KN]);
+  for (int k = 1; k < NCOEFF; k++)
+    if (value[k] < 0.0)
+      lmp->error->all(FLERR, "{}: {} must be >= 0, got {}", where, COEFF_NAMES[k], value[k]);
 }
 
 void GRFLOW::pack_coeffs(const double *value, ContactCoeffs &c)

@@ -39,6 +39,10 @@ namespace GRFLOW {
   int parse_coeffs(LAMMPS *lmp, const std::string &cmd, int narg, char **arg, int first,
                    bool stop_at_unknown, double *value);
 
+  // stop with an error naming the coefficient unless kn > 0 and every
+  // other coefficient >= 0, all finite; where: the command or the source
+  void check_coeffs(LAMMPS *lmp, const std::string &where, const double *value);
+
   void pack_coeffs(const double *value, ContactCoeffs &c);
 
 }    // namespace GRFLOW

@@ -217,6 +217,9 @@ void PairGranularGRFLOW::init_style()
   neighbor->add_request(this, NeighConst::REQ_SIZE | NeighConst::REQ_HISTORY);
 
   dt = update->dt;
+  if (!(dt > 0.0) || !std::isfinite(dt))
+    error->all(FLERR, "Pair granular/grflow needs a timestep > 0 (the contact springs grow by "
+               "v dt), got {}", dt);
 
   // on first init, create the fix that stores the contact history;
   // it replaces the FixDummy created in the constructor.  Never its
@@ -270,8 +273,11 @@ double PairGranularGRFLOW::init_one(int i, int j)
 
   for (int k = 0; k < NCOEFF; k++) param[k][j][i] = param[k][i][j];
 
+  // every road a coefficient takes (pair_coeff, mixing, fix adapt through
+  // reinit(), restart and data files) ends here: check it once more
   double value[NCOEFF];
   for (int k = 0; k < NCOEFF; k++) value[k] = param[k][i][j];
+  check_coeffs(lmp, fmt::format("Pair granular/grflow coefficients of types {} {}", i, j), value);
   ContactCoeffs &c = packed[i][j];
   pack_coeffs(value, c);
   packed[j][i] = c;
