@@ -218,8 +218,10 @@ void PairGranularGRFLOW::init_style()
 
   dt = update->dt;
   if (!(dt > 0.0) || !std::isfinite(dt))
-    error->all(FLERR, "Pair granular/grflow needs a timestep > 0 (the contact springs grow by "
-               "v dt), got {}", dt);
+    error->all(FLERR,
+               "Pair granular/grflow needs a timestep > 0 (the contact springs grow by "
+               "v dt), got {}",
+               dt);
 
   // on first init, create the fix that stores the contact history;
   // it replaces the FixDummy created in the constructor.  Never its
