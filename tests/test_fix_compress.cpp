@@ -428,10 +428,10 @@ TEST(Compress, WallCoefficientByFixModify)
   EXPECT_EQ(a, b);
   EXPECT_GT(fabs(b.back()), 1.0);    // the wall carries load (N)
   EXPECT_NE(error_after({"include " + deck("compress_cell.lmp")}, "fix_modify w mut -1")
-                .find("fix_modify w mut must be >= 0, got -1"),
+                .find("fix_modify w: mut must be >= 0, got -1"),
             std::string::npos);
   EXPECT_NE(error_after({"include " + deck("compress_cell.lmp")}, "fix_modify w kn 0")
-                .find("fix_modify w kn must be > 0"),
+                .find("fix_modify w: kn must be > 0"),
             std::string::npos);
 }
 

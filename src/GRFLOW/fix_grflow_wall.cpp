@@ -321,11 +321,11 @@ int FixGRFLOWWall::modify_param(int narg, char **arg)
     if (strcmp(arg[0], COEFF_NAMES[k]) != 0) continue;
     if (narg < 2)
       utils::missing_cmd_args(FLERR, fmt::format("fix_modify {} {}", id, arg[0]), error);
-    const double value = utils::numeric(FLERR, arg[1], false, lmp);
-    if (value < 0.0 || (k == KN && value == 0.0))
-      error->all(FLERR, "fix_modify {} {} must be {}, got {}", id, arg[0], k == KN ? "> 0" : ">= 0",
-                 value);
-    coeff_value[k] = value;
+    double value[NCOEFF];
+    for (int m = 0; m < NCOEFF; m++) value[m] = coeff_value[m];
+    value[k] = utils::numeric(FLERR, arg[1], false, lmp);
+    check_coeffs(lmp, fmt::format("fix_modify {}", id), value);
+    coeff_value[k] = value[k];
     pack_coeffs(coeff_value, coeff);
     return 2;
   }
