@@ -39,7 +39,7 @@ if [ -z "$last" ]; then
 fi
 points=(0)
 for f in $(ls "$rundir" | sed -n 's/^shear\.restart\.\([0-9]*\)$/\1/p' | sort -n); do
-  [ "$f" -gt 0 ] && [ "$f" -lt "$last" ] && points+=("$f")    # shear.restart.0: the start, as prep.restart
+  [ "$f" -lt "$last" ] && points+=("$f")
 done
 sel=()
 for i in "${!points[@]}"; do

@@ -286,52 +286,6 @@ def test_kill_and_resume_gives_one_series(protocol, tmp_path):
             in (killed / "log.shear.lammps").read_text())
 
 
-def test_kill_before_the_first_restart_file_resumes_from_the_start(protocol, tmp_path):
-    """A shear stage killed before its first periodic restart file resumes
-    from shear.restart.0, written at its start: it says so, rewrites the
-    series from step 0 (no row twice) and runs to the end."""
-    src, _ = protocol
-    common = dict(SMALL, stage="shear", restart_every=1000000, max_steps=8000, n_post=1000)
-    out = tmp_path / "early"
-    (out / "snapshots").mkdir(parents=True)
-    (out / "prep.restart").symlink_to(src / "prep.restart")
-    proc = subprocess.Popen(lmp_cmd(out, **common), stdout=subprocess.DEVNULL,
-                            stderr=subprocess.DEVNULL)
-    series = out / "series.txt"
-    deadline = time.time() + 600
-    # kill it once it has written rows past step 0, long before step 1000000
-    while not (series.exists() and len(read_series_lenient(series)) >= 3):
-        assert proc.poll() is None, "the run ended before it was killed"
-        assert time.time() < deadline
-        time.sleep(0.02)
-    proc.send_signal(signal.SIGKILL)
-    proc.wait()
-    before = read_series_lenient(series)
-    files = sorted(p.name for p in out.glob("shear.restart.*"))
-    print(f"[ measured ] killed at series step {before[-1][0]:g}, restart files {files}")
-    assert files == ["shear.restart.0"]
-    assert before[-1][0] < 8000, "killed too late: the run had finished"
-
-    run(out, resume="yes", **common)
-    assert "GRFLOW shear: resuming at step 0" in (out / "log.shear.lammps").read_text()
-    steps = [r[0] for r in read_series(series)]
-    every = int(SMALL["series_every"])
-    assert steps == list(range(0, 8000 + 1, every))    # every row once, from step 0
-    assert "GRFLOW shear: done at step 8000" in (out / "log.shear.lammps").read_text()
-
-
-def read_series_lenient(path):
-    """the complete rows of a series that a killed run may have cut short"""
-    rows = []
-    for line in path.read_text().splitlines():
-        if line.startswith("#"):
-            continue
-        values = line.split()
-        if len(values) == len(COLUMNS):
-            rows.append([float(v) for v in values])
-    return rows
-
-
 def test_stock_deck_runs_the_protocol(protocol, tmp_path):
     """inputs/cyclic_shear_stock.lmp: the same small protocol with stock
     pair granular (the same law) prepares a packing like granular/grflow's
