@@ -574,10 +574,56 @@ PAPER = {
     "inertial_max": (0.025, 0.0, "max",
                      "Sec. 2: 'Even in the liquefaction state, I does not increase "
                      "beyond 0.025'"),
+    "inertial_max_pre_IL": (1e-3, 0.0, "max",
+                            "Sec. 2: 'The shear is nearly quasistatic if I < 10^-3' and "
+                            "'nearly quasistatic in the non-liquefaction states'"),
+    "inertial_median_post_IL": (None, None, None, "no number given"),
+    "inertial_undefined_rows": (None, None, None,
+                                "no number given (the paper's I <= 0.025 implies p > 0)"),
+    "p_min_post_IL": (None, None, None,
+                      "no number given (I <= 0.025 at v_x = 0.01 m/s implies p above "
+                      "about 1 Pa)"),
     "a_c_peak_per_cycle": (None, None, None,
                            "Sec. 4: the maximum of a_c 'increases gradually with N'; "
                            "no number given"),
 }
+
+
+def inertial_stats(series, onset):
+    """The inertial number as the deck wrote it (column ``inertial``: I from
+    the unfloored p, -1 where p = 0 and I is undefined), split at the onset
+    row of initial liquefaction (None: not reached).
+
+    Returns a dict: ``max`` (largest defined I), ``max_pre_IL``,
+    ``median_post_IL``, ``undefined_rows`` (rows with I = -1) and
+    ``p_min_post_IL`` (smallest p from the onset on, Pa).  A value that
+    cannot be measured is NOT_AVAILABLE or NOT_REACHED.  Series written
+    before the deck stopped flooring p at 1 Pa in I give that floored I.
+    """
+    out = {}
+    if "inertial" not in series:
+        out.update(max=NOT_AVAILABLE, max_pre_IL=NOT_AVAILABLE,
+                   median_post_IL=NOT_AVAILABLE, undefined_rows=NOT_AVAILABLE)
+    else:
+        inert = np.asarray(series["inertial"], dtype=float)
+        defined = np.isfinite(inert) & (inert >= 0.0)
+        out["undefined_rows"] = int(np.count_nonzero(~defined))
+        out["max"] = float(inert[defined].max()) if defined.any() else NOT_AVAILABLE
+        end = len(inert) if onset is None else onset
+        pre = inert[:end][defined[:end]]
+        out["max_pre_IL"] = float(pre.max()) if len(pre) else NOT_AVAILABLE
+        if onset is None:
+            out["median_post_IL"] = NOT_REACHED
+        else:
+            post = inert[onset:][defined[onset:]]
+            out["median_post_IL"] = float(np.median(post)) if len(post) else NOT_AVAILABLE
+    if onset is None:
+        out["p_min_post_IL"] = NOT_REACHED
+    else:
+        p = np.asarray(series["p"], dtype=float)[onset:]
+        p = p[np.isfinite(p)]
+        out["p_min_post_IL"] = float(p.min()) if len(p) else NOT_AVAILABLE
+    return out
 
 
 def _match(measured, paper, tol, comparison):
@@ -668,12 +714,19 @@ def summary(series, prep=None, cycle_index=None):
         _entry("z_g_exit_std", "standard deviation (population) of z_g at the exits",
                "-", float(np.std(zex)) if ex else NOT_REACHED),
     ]
-    if "inertial" in series:
-        inert = series["inertial"]
-        meas = float(np.max(inert)) if np.all(np.isfinite(inert)) else "infinite"
-    else:
-        meas = NOT_AVAILABLE
-    entries.append(_entry("inertial_max", "largest inertial number I", "-", meas))
+    ist = inertial_stats(series, onset)
+    entries += [
+        _entry("inertial_max", "largest inertial number I where p > 0", "-", ist["max"]),
+        _entry("inertial_max_pre_IL", "largest I before initial liquefaction", "-",
+               ist["max_pre_IL"]),
+        _entry("inertial_median_post_IL", "median I after initial liquefaction, p > 0",
+               "-", ist["median_post_IL"]),
+        _entry("inertial_undefined_rows",
+               "rows with p = 0, where I is undefined (series value -1)", "-",
+               ist["undefined_rows"]),
+        _entry("p_min_post_IL", "smallest p after initial liquefaction", "Pa",
+               ist["p_min_post_IL"]),
+    ]
     entries.append(_entry("a_c_peak_per_cycle",
                           "maximum a_c in each cycle n <= N < n+1 (last may be partial)",
                           "-", peak_ac_per_cycle(series, N)))

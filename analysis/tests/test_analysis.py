@@ -403,6 +403,24 @@ def test_summary_liquefied(liquefied_run):
     assert summ["cycle_C"]["states"]["C2'"]["z_g"] == EXIT_ZG[4]
 
 
+def test_inertial_stats_undefined_rows_and_split():
+    # the deck writes I = -1 where p = 0: such rows are counted, never taken
+    # as a value; the split is at the onset row
+    series = {"inertial": np.array([1e-4, 5e-4, 2e-4, -1.0, 0.3, -1.0, 0.01]),
+              "p": np.array([9e4, 5e4, 2e4, 0.0, 0.007, 0.0, 80.0])}
+    st = ga.inertial_stats(series, onset=2)
+    assert st["max"] == 0.3
+    assert st["max_pre_IL"] == 5e-4
+    assert st["median_post_IL"] == pytest.approx(np.median([2e-4, 0.3, 0.01]), abs=0)
+    assert st["undefined_rows"] == 2
+    assert st["p_min_post_IL"] == 0.0
+    st = ga.inertial_stats(series, onset=None)
+    assert st["max_pre_IL"] == 0.3 and st["median_post_IL"] == ga.NOT_REACHED
+    assert st["p_min_post_IL"] == ga.NOT_REACHED
+    st = ga.inertial_stats({"p": series["p"]}, onset=2)
+    assert st["max"] == ga.NOT_AVAILABLE and st["p_min_post_IL"] == 0.0
+
+
 def test_summary_never_liquefied(dry_run):
     root, _, _, _ = dry_run
     s = ga.read_series(os.path.join(root, "series.txt"))

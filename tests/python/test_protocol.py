@@ -123,6 +123,16 @@ def test_whole_protocol_reaches_liquefaction(protocol):
     # P_c sums to one, the columns are the compute's
     for r in rows[:: max(1, len(rows) // 50)]:
         assert sum(r[COLUMNS.index("P0"):]) == pytest.approx(1.0, abs=1e-4)
+    # the inertial number I = (v_x/h) d_mean sqrt(density/p) from p as it is,
+    # -1 where p = 0 (undefined); the series' columns hold %.6g and %.10g
+    for k in range(len(rows)):
+        p, inert = col["p"][k], col["inertial"][k]
+        if p > 0.0:
+            h = col["zhi"][k] - col["zlo"][k]
+            expect = prep["v_x"] / h * prep["d_mean"] * (prep["density"] / p) ** 0.5
+            assert inert == pytest.approx(expect, rel=1e-5), (steps[k], p, inert)
+        else:
+            assert inert == -1.0, (steps[k], p, inert)
     # constant volume: walls and box do not move in z
     assert max(col["zhi"]) - min(col["zhi"]) == 0.0
     assert max(col["zlo"]) - min(col["zlo"]) == 0.0
@@ -283,6 +293,50 @@ def test_kill_and_resume_gives_one_series(protocol, tmp_path):
     assert (killed / "series.txt").read_text() == series
     assert sorted(p.name for p in killed.glob("shear.restart.*")) == files
     assert ("had finished at step 20000; nothing to resume"
+            in (killed / "log.shear.lammps").read_text())
+
+
+def test_resume_before_the_first_restart_file(protocol, tmp_path):
+    """A shear stage killed before its first periodic restart file resumes
+    from shear.restart.0 (the copy of prep.restart the stage makes when it
+    starts): the stage starts again, says so, and writes series.txt anew.
+    The commands after read_restart are the same as a fresh start's, so
+    the series equals an uninterrupted run's to the last digit."""
+    src, _ = protocol
+    common = dict(SMALL, stage="shear", restart_every=1000000, max_steps=40000,
+                  n_post=1000)
+
+    def fresh(name):
+        out = tmp_path / name
+        (out / "snapshots").mkdir(parents=True)
+        (out / "prep.restart").symlink_to(src / "prep.restart")
+        return out
+
+    ref = fresh("ref")
+    run(ref, **common)
+    ref_text = (ref / "series.txt").read_text()
+    assert (ref / "shear.restart.0").read_bytes() == (src / "prep.restart").read_bytes()
+
+    killed = fresh("killed")
+    proc = subprocess.Popen(lmp_cmd(killed, **common), stdout=subprocess.DEVNULL,
+                            stderr=subprocess.DEVNULL)
+    deadline = time.time() + 600
+    series = killed / "series.txt"
+    # (lines, not parsed rows: the last line may be half written)
+    while not (series.exists() and series.read_text().count("\n") >= 20):
+        assert proc.poll() is None, "the run ended before it was killed"
+        assert time.time() < deadline
+        time.sleep(0.05)
+    proc.send_signal(signal.SIGKILL)
+    proc.wait()
+    restarts = sorted(p.name for p in killed.glob("shear.restart.*"))
+    assert restarts == ["shear.restart.0"], restarts
+    assert read_series(series)[-1][0] < 40000, "killed too late: the run had finished"
+
+    run(killed, resume="yes", **common)
+    assert read_series(series) == read_series(ref / "series.txt")
+    assert series.read_text().count("# step") == ref_text.count("# step")
+    assert ("starting it again from prep.restart"
             in (killed / "log.shear.lammps").read_text())
 
 
