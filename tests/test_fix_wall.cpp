@@ -1066,6 +1066,60 @@ TEST_F(WallPacking, RestartContinuesTrajectory)
 }
 
 // ---------------------------------------------------------------------------
+// The near list: between neighbor list builds only atoms near a wall are
+// visited.  A fix adapt that changes nothing turns the list off (radii
+// might change) and leaves the trajectory as it is, so with it the fix
+// takes the full pass over all atoms on every step: both ways must give
+// the same trajectory to the last bit, through many list builds and wall
+// moves of more than skin/2.
+// ---------------------------------------------------------------------------
+
+TEST(FixWallNearList, SameTrajectoryAsTheFullPass)
+{
+  auto run = [](bool full_pass) {
+    Lammps lmp;
+    // a hot gas of 64 spheres at about 1 m/s (with a small skin the
+    // neighbor lists are built every few dozen steps) between a fixed
+    // bottom wall and a top wall coming down at 0.5 m/s
+    lmp.cmds({"units si", "atom_style sphere", "atom_modify map array", "boundary p p f",
+              "comm_modify vel yes", "lattice sc 2.0e-3", "region box block 0 4 0 4 0 5",
+              "create_box 1 box", "region gas block 0 4 0 4 0.5 4.5",
+              "create_atoms 1 region gas",
+              "variable d atom 1.0e-3+random(0,1,4321)*0.6e-3",
+              "set group all diameter v_d density 2650",
+              "velocity all create 1.4e17 5 dist gaussian",
+              "neighbor 1.0e-5 bin", "neigh_modify delay 0 every 1 check yes",
+              "timestep 1.0e-7", "pair_style granular/grflow",
+              "pair_coeff * * 1.0e6 1.15 mut 0.4",
+              "fix w all grflow/wall 1.0e6 1.15 mut 0.4 zlo 0.0 zhi 9.0e-3",
+              "fix_modify w wall hi vel 0.1 0 -0.5", "fix nve all nve/sphere",
+              "variable mu equal 0.4", "thermo 1000"});
+    if (full_pass) lmp.cmd("fix adapt all adapt 1 pair granular/grflow mut * * v_mu");
+    // the mean normal force on the walls over the run: they are touched
+    lmp.cmds({"variable fz equal abs(f_w[3])+abs(f_w[9])",
+              "fix fz all ave/time 1 20000 20000 v_fz", "run 20000"});
+    struct Result {
+      std::vector<double> x, v, w, wall;
+      double builds, fz;
+    } r{lmp.gather3("x"), lmp.gather3("v"),     lmp.gather3("omega"),
+        fvec(lmp, "w"),   lmp.thermo("nbuild"), *(double *) lammps_extract_fix(lmp.handle, "fz", LMP_STYLE_GLOBAL, LMP_TYPE_SCALAR, 0, 0)};
+    return r;
+  };
+  const auto near = run(false), full = run(true);
+  measured("near list: neighbor list builds in 20000 steps", near.builds);
+  EXPECT_GT(near.builds, 50.0);
+  EXPECT_EQ(near.builds, full.builds);
+  EXPECT_EQ(near.x, full.x);
+  EXPECT_EQ(near.v, full.v);
+  EXPECT_EQ(near.w, full.w);
+  EXPECT_EQ(near.wall, full.wall);
+  EXPECT_GT(measured("near list: mean wall normal force (N)", near.fz), 0.0);
+  EXPECT_EQ(near.fz, full.fz);
+  // the top wall came down 1 mm, 20 times skin/2
+  EXPECT_NEAR(near.wall[HI_Z], 8.0e-3, 1.0e-9);
+}
+
+// ---------------------------------------------------------------------------
 // Bad input
 // ---------------------------------------------------------------------------
 

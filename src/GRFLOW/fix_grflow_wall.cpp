@@ -32,6 +32,7 @@
 #include "error.h"
 #include "memory.h"
 #include "modify.h"
+#include "neighbor.h"
 #include "update.h"
 
 #include <cmath>
@@ -48,8 +49,10 @@ static constexpr int NVECTOR = 6;    // per wall: Fx Fy Fz z dx dy
 /* ---------------------------------------------------------------------- */
 
 FixGRFLOWWall::FixGRFLOWWall(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), history(nullptr), contact(nullptr), contact_step(-1)
+    Fix(lmp, narg, arg), history(nullptr), contact(nullptr), contact_step(-1), near(nullptr),
+    nnear(0), maxnear(0), near_allowed(false), near_ncalls(-1), near_nlocal(-1)
 {
+  near_z[LO] = near_z[HI] = 0.0;
   if (!atom->radius_flag || !atom->omega_flag || !atom->torque_flag)
     error->all(FLERR,
                "Fix grflow/wall requires atom attributes radius, omega and torque "
@@ -135,6 +138,7 @@ FixGRFLOWWall::~FixGRFLOWWall()
   atom->delete_callback(id, Atom::RESTART);
   memory->destroy(history);
   memory->destroy(contact);
+  memory->destroy(near);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -151,6 +155,12 @@ void FixGRFLOWWall::init()
   dt = update->dt;
   if (utils::strmatch(update->integrate_style, "^respa"))
     error->all(FLERR, "Fix grflow/wall does not support run_style respa");
+
+  // the near list (update_near()) needs the displacement bound of
+  // "neigh_modify delay 0 every 1 check yes" and fixed radii
+  near_allowed = (neighbor->every == 1) && (neighbor->delay == 0) && neighbor->dist_check &&
+      !neighbor->build_once && (neighbor->skin > 0.0) && modify->get_fix_by_style("^adapt").empty();
+  near_ncalls = -1;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -205,9 +215,15 @@ void FixGRFLOWWall::post_force(int vflag)
   // only its arms are cleared, and a wall's history only if the atom
   // touched that wall on the step before (the contact just ended).  Most
   // atoms are such atoms on most steps.
+  //
+  // Between neighbor list builds only the atoms of the near list can touch
+  // a wall (see update_near()); the others were cleared when it was made.
   const bool lo_on = walls[LO].active, hi_on = walls[HI].active;
   const double zlo = walls[LO].z, zhi = walls[HI].z;
-  for (int i = 0; i < nlocal; i++) {
+  const bool use_near = update_near();
+  const int nloop = use_near ? nnear : nlocal;
+  for (int ii = 0; ii < nloop; ii++) {
+    const int i = use_near ? near[ii] : ii;
     double *ci = contact[i];
     const double rad = radius[i];
     const double z = x[i][2];
@@ -276,6 +292,56 @@ void FixGRFLOWWall::post_force(int vflag)
       }
     }
   }
+}
+
+/* ----------------------------------------------------------------------
+   the near list: the atoms of the group that may touch a wall before the
+   next neighbor list build.  With "neigh_modify delay 0 every 1 check
+   yes" every atom stays within skin/2 of where it was at the last build;
+   the list is made again, on the step of each build or when a wall has
+   moved more than skin/2 since, with the atoms whose centre was then
+   closer to an active wall than their radius plus 1.5 skins.  An atom
+   left out is therefore farther from every wall than its radius plus
+   skin/2 (a margin for round-off) until the list is made again: it cannot touch one, and its arms and histories were
+   cleared (by the full pass of post_force() on the step the list is made).
+   Returns false (full pass over all atoms) on the steps the list is made,
+   and always with other neighbor settings, a fix adapt (radii may grow)
+   or a zero skin.
+------------------------------------------------------------------------- */
+
+bool FixGRFLOWWall::update_near()
+{
+  if (!near_allowed) return false;
+  const double half_skin = 0.5 * neighbor->skin;
+  bool fresh = (neighbor->ncalls == near_ncalls) && (atom->nlocal == near_nlocal);
+  for (int iw = 0; iw < NWALL; iw++)
+    if (walls[iw].active && fabs(walls[iw].z - near_z[iw]) > half_skin) fresh = false;
+  if (fresh) return true;
+
+  // make the list; this step's post_force() does the full pass
+  const int nlocal = atom->nlocal;
+  if (nlocal > maxnear) {
+    memory->destroy(near);
+    maxnear = atom->nmax;
+    memory->create(near, maxnear, "grflow/wall:near");
+  }
+  double **x = atom->x;
+  const double *radius = atom->radius;
+  const int *mask = atom->mask;
+  const double skin = neighbor->skin;
+  nnear = 0;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const double reach = radius[i] + 1.5 * skin;
+    const double z = x[i][2];
+    if ((walls[LO].active && z - walls[LO].z < reach) ||
+        (walls[HI].active && walls[HI].z - z < reach))
+      near[nnear++] = i;
+  }
+  near_ncalls = neighbor->ncalls;
+  near_nlocal = nlocal;
+  for (int iw = 0; iw < NWALL; iw++) near_z[iw] = walls[iw].z;
+  return false;
 }
 
 /* ---------------------------------------------------------------------- */

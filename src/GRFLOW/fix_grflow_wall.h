@@ -95,6 +95,15 @@ class FixGRFLOWWall : public Fix {
   double **contact;    // per atom: arm, fx, fy, fz per wall (this step, see post_force())
   bigint contact_step;
 
+  // atoms that may touch a wall until the next neighbor list build
+  int *near;
+  int nnear, maxnear;
+  bool near_allowed;       // neighbor settings allow the near list
+  bigint near_ncalls;      // neighbor->ncalls when it was made
+  int near_nlocal;         // atom->nlocal then
+  double near_z[NWALL];    // wall positions then
+  bool update_near();
+
   void mark_unknown(int);
 };
 
