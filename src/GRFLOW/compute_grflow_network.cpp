@@ -226,7 +226,11 @@ double ComputeGRFLOWNetwork::eval(const char *str, const char *what)
   const int ivar = input->variable->find(str + 2);
   if (ivar < 0)
     error->all(FLERR, "Variable {} for compute grflow/network {} does not exist", str + 2, what);
-  return input->variable->compute_equal(ivar);
+  const double value = input->variable->compute_equal(ivar);
+  if (!std::isfinite(value))
+    error->all(FLERR, "Compute grflow/network {}: variable {} is {}, not a finite number", what,
+               str + 2, value);
+  return value;
 }
 
 /* ----------------------------------------------------------------------
@@ -257,7 +261,7 @@ void ComputeGRFLOWNetwork::set_inside(double &volume)
   } else {
     const double zlo = zlo_str ? eval(zlo_str, "zlimits") : domain->boxlo[2];
     const double zhi = zhi_str ? eval(zhi_str, "zlimits") : domain->boxhi[2];
-    if (zhi <= zlo)
+    if (!(zhi > zlo))
       error->all(FLERR, "Compute grflow/network zlimits must have zlo < zhi, got {} {}", zlo, zhi);
     const double half = 0.5 * slab * (zhi - zlo);
     const double zmid = 0.5 * (zlo + zhi);
@@ -278,8 +282,8 @@ void ComputeGRFLOWNetwork::set_inside(double &volume)
       inside[i] = ((mask[i] & groupbit) && z >= lo && z < hi) ? 1.0 : 0.0;
     }
   }
-  if (volume <= 0.0)
-    error->all(FLERR, "Compute grflow/network sub-volume is {}: must be > 0", volume);
+  if (!(volume > 0.0) || !std::isfinite(volume))
+    error->all(FLERR, "Compute grflow/network sub-volume is {}: must be finite and > 0", volume);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -261,6 +261,30 @@ void PairGranularGRFLOW::init_style()
   for (int i = 0; i < atom->nlocal; i++)
     onerad_dynamic[type[i]] = MAX(onerad_dynamic[type[i]], radius[i]);
   MPI_Allreduce(&onerad_dynamic[1], &maxrad_dynamic[1], ntypes, MPI_DOUBLE, MPI_MAX, world);
+
+  // every particle a sphere of finite, positive radius (a data file or a
+  // set command can give a zero, negative or non-finite diameter): the
+  // first such atom by ID is named
+  const tagint *tag = atom->tag;
+  tagint bad = MAXTAGINT, badall;
+  double badrad = 0.0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (!(radius[i] > 0.0) || !std::isfinite(radius[i])) {
+      if (tag[i] < bad) {
+        bad = tag[i];
+        badrad = radius[i];
+      }
+    }
+  MPI_Allreduce(&bad, &badall, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  if (badall != MAXTAGINT) {
+    // its radius to every rank: only its owner adds a value other than 0
+    double r = (bad == badall) ? badrad : 0.0, rall;
+    MPI_Allreduce(&r, &rall, 1, MPI_DOUBLE, MPI_SUM, world);
+    error->all(FLERR,
+               "Pair granular/grflow: atom {} has diameter {}: every particle must be a sphere "
+               "with a finite diameter > 0",
+               badall, 2.0 * rall);
+  }
 }
 
 /* ----------------------------------------------------------------------

@@ -24,6 +24,7 @@
 #include "pair_granular_grflow.h"
 
 #include "atom.h"
+#include "error.h"
 #include "fix_neigh_history.h"
 #include "force.h"
 #include "neigh_list.h"
@@ -146,6 +147,11 @@ void PairGranularGRFLOW::eval(int iifrom, int iito, int eflag, double *const *f,
         continue;
       }
       touch[jj] = 1;
+      if (rsq == 0.0)
+        error->one(FLERR,
+                   "Pair granular/grflow: atoms {} and {} are at the same position {} {} {}: "
+                   "the contact normal is undefined",
+                   atom->tag[i], atom->tag[j], xtmp, ytmp, ztmp);
 
       pair_geometry(del, sqrt(rsq), radi, radj, use_full_arm, g);
       vrel[0] = v[i][0] - v[j][0];

@@ -53,3 +53,60 @@ def test_fix_adapt_value_is_checked(tmp_path, value, coeff, expect):
 def test_timestep_must_be_positive(tmp_path, dt):
     text = error_of(tmp_path, f"timestep {dt}\nrun 1\n")
     assert "needs a timestep > 0" in text
+
+
+def test_same_centre_is_an_error(tmp_path):
+    # a second sphere exactly on the first: no contact normal
+    text = error_of(tmp_path, "create_atoms 1 single 0.005 0.005 0.005\n"
+                              "set atom 3 diameter 1.0e-3 density 2650\nrun 1\n")
+    assert "atoms 1 and 3 are at the same position" in text or \
+        "atoms 3 and 1 are at the same position" in text
+
+
+@pytest.mark.parametrize("diameter", ["-1.0e-3", "0.0"])
+def test_bad_diameter_from_a_data_file(tmp_path, diameter):
+    # a data file is one road a diameter takes that set and create_atoms
+    # do not check
+    data = tmp_path / "bad.data"
+    data.write_text(f"""# two spheres, one with a bad diameter
+
+2 atoms
+1 atom types
+0 0.01 xlo xhi
+0 0.01 ylo yhi
+0 0.01 zlo zhi
+
+Atoms # sphere
+
+1 1 1.0e-3 2650 0.005 0.005 0.005
+2 1 {diameter} 2650 0.0059 0.005 0.005
+""")
+    deck = tmp_path / "in.data"
+    deck.write_text(f"""units si
+atom_style sphere
+read_data {data}
+pair_style granular/grflow
+pair_coeff * * 1.0e6 1.15
+comm_modify vel yes
+fix nve all nve/sphere
+run 1
+""")
+    proc = run_lmp(["-in", str(deck)], tmp_path, check=False)
+    text = proc.stdout + proc.stderr
+    assert proc.returncode != 0, text[-2000:]
+    assert "atom 2 has diameter" in text and "finite diameter > 0" in text, text[-2000:]
+
+
+@pytest.mark.parametrize("zlimits,expect", [
+    ("v_lo v_inf", "variable inf is inf, not a finite number"),
+    ("v_hi v_lo", "must have zlo < zhi"),
+])
+def test_network_zlimits_must_be_finite(tmp_path, zlimits, expect):
+    # an equal-style variable can be infinite (1e300*1e300); LAMMPS refuses
+    # to use it in another formula, so a NaN cannot be made this way (the
+    # same check catches one)
+    text = error_of(tmp_path, "variable lo equal 0.0\nvariable hi equal 0.01\n"
+                              "variable inf equal 1.0e300*1.0e300\n"
+                              f"compute net all grflow/network zlimits {zlimits}\n"
+                              "thermo_style custom step c_net[1]\nrun 0\n")
+    assert expect in text, text[-2000:]
