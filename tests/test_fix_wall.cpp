@@ -27,10 +27,16 @@
 ------------------------------------------------------------------------- */
 
 #include "grflow_contact.h"
+#include "grflow_restart.h"
 #include "lammps_fixture.h"
 
 #include <array>
+#include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <limits>
 
 using namespace grflow_test;
 using namespace LAMMPS_NS::GRFLOW;
@@ -1263,6 +1269,58 @@ TEST(FixWallErrors, RespaAndRestartMismatch)
   EXPECT_NE(msg.find("Fix grflow/wall w: restart file has other walls than the command"),
             std::string::npos)
       << msg;
+}
+
+// The wall's restart data carry a header (grflow_restart.h): a restart
+// file whose block was written by a newer format, has another size or
+// holds a non-finite value stops read_restart's fix command with an error
+// that names the fix.  The damage is made in the bytes of a written file,
+// found by the header's tag.
+TEST(FixWallErrors, DamagedRestartData)
+{
+  const std::string file = workfile("wall_damage.restart");
+  {
+    Lammps lmp;
+    lmp.cmds(one_sphere);
+    lmp.cmds({"fix w all grflow/wall 1.0e6 1.15 zlo 0.001 zhi 0.009",
+              "fix_modify w wall hi vel 0.01 0 0", "run 0", "write_restart " + file});
+  }
+  std::ifstream in(file, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const double tag = LAMMPS_NS::GRFLOW::RESTART_TAG;
+  const size_t at = bytes.find(std::string((const char *) &tag, sizeof(double)));
+  ASSERT_NE(at, std::string::npos) << "no GRFLOW restart block in " << file;
+  ASSERT_EQ(bytes.find(std::string((const char *) &tag, sizeof(double)), at + 1),
+            std::string::npos);
+
+  // value k of the block (0: tag, 1: version, 2: count, 3...: data) set to x
+  auto damaged = [&](int k, double x) {
+    std::string b = bytes;
+    memcpy(&b[at + k * sizeof(double)], &x, sizeof(double));
+    const std::string out = workfile("wall_damaged.restart");
+    std::ofstream(out, std::ios::binary) << b;
+    return error_after({"read_restart " + out},
+                       "fix w all grflow/wall 1.0e6 1.15 zlo 0.001 zhi 0.009");
+  };
+  // undamaged: read back
+  {
+    Lammps lmp;
+    lmp.cmds({"read_restart " + file, "fix w all grflow/wall 1.0e6 1.15 zlo 0.001 zhi 0.009"});
+  }
+  std::string msg = damaged(1, 99.0);
+  EXPECT_NE(msg.find("Fix grflow/wall w: restart data of format version 99; this GRFLOW reads "
+                     "versions up to 1"),
+            std::string::npos)
+      << msg;
+  msg = damaged(2, 13.0);
+  EXPECT_NE(msg.find("hold 13 values, expected 14: the file is damaged"), std::string::npos)
+      << msg;
+  // the top wall's z (values: lo active z vx vy vz dx dy, hi active z ...)
+  msg = damaged(3 + 8, std::numeric_limits<double>::quiet_NaN());
+  EXPECT_NE(msg.find("Fix grflow/wall w: restart value 9 of 14 is nan"), std::string::npos)
+      << msg;
+  msg = damaged(3 + 9, std::numeric_limits<double>::infinity());
+  EXPECT_NE(msg.find("restart value 10 of 14 is inf"), std::string::npos) << msg;
 }
 
 }    // namespace

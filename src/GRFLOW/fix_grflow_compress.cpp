@@ -29,6 +29,8 @@
 
 #include "fix_grflow_compress.h"
 
+#include "grflow_restart.h"
+
 #include "atom.h"
 #include "comm.h"
 #include "compute.h"
@@ -48,6 +50,8 @@
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
+using GRFLOW::read_restart_values;
+using GRFLOW::write_restart_values;
 
 // restart: rates x y z, RESTART_V2 + started, gain factors x y z, last
 // errors x y z, overshoot counts x y z.  Files written before the
@@ -55,6 +59,7 @@ using namespace FixConst;
 // offset tells them apart (LAMMPS does not pass the size to restart()).
 static constexpr int NRESTART = 13;
 static constexpr int RESTART_V2 = 2;
+static constexpr int RESTART_VERSION = 1;    // of the headed block (grflow_restart.h)
 
 // overshoot damping: after NOVERSHOOT updates in a row, each of which
 // overshoots the target by more than half the previous error, an axis's
@@ -440,18 +445,21 @@ void FixGRFLOWCompress::write_restart(FILE *fp)
     list[7 + a] = err_last[a];
     list[10 + a] = (double) novershoot[a];
   }
-  if (comm->me == 0) {
-    int size = NRESTART * sizeof(double);
-    fwrite(&size, sizeof(int), 1, fp);
-    fwrite(list, sizeof(double), NRESTART, fp);
-  }
+  write_restart_values(lmp, fp, RESTART_VERSION, list, NRESTART);
 }
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   format 1: the header of grflow_restart.h, then the values of
+   write_restart(); format 0 (files written before the header): the same
+   values without it, or only the first four (files written before the
+   overshoot damping, told apart by RESTART_V2)
+------------------------------------------------------------------------- */
 
 void FixGRFLOWCompress::restart(char *buf)
 {
-  auto list = (double *) buf;
+  int version;
+  const double *list = read_restart_values(lmp, fmt::format("Fix grflow/compress {}", id), buf,
+                                           RESTART_VERSION, NRESTART, version);
   rate[0] = list[0];
   rate[1] = list[1];
   rate[2] = list[2];

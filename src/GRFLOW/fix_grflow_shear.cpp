@@ -26,6 +26,8 @@
 
 #include "fix_grflow_shear.h"
 
+#include "grflow_restart.h"
+
 #include "atom.h"
 #include "comm.h"
 #include "compute_grflow_network.h"
@@ -41,8 +43,11 @@
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
+using GRFLOW::read_restart_values;
+using GRFLOW::write_restart_values;
 
 static constexpr int NRESTART = 8;
+static constexpr int RESTART_VERSION = 1;
 enum { NO_EVENT, EVENT_REVERSAL, EVENT_ZERO };
 
 /* ---------------------------------------------------------------------- */
@@ -371,18 +376,20 @@ void FixGRFLOWShear::write_restart(FILE *fp)
                            p0,
                            time_il,
                            (double) await_zero};
-  if (comm->me == 0) {
-    int size = NRESTART * sizeof(double);
-    fwrite(&size, sizeof(int), 1, fp);
-    fwrite(list, sizeof(double), NRESTART, fp);
-  }
+  write_restart_values(lmp, fp, RESTART_VERSION, list, NRESTART);
 }
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   format 1: the header of grflow_restart.h, then the values of
+   write_restart(); format 0 (files written before the header): the same
+   values without it
+------------------------------------------------------------------------- */
 
 void FixGRFLOWShear::restart(char *buf)
 {
-  auto list = (double *) buf;
+  int version;
+  const double *list = read_restart_values(lmp, fmt::format("Fix grflow/shear {}", id), buf,
+                                           RESTART_VERSION, NRESTART, version);
   started = (int) list[0];
   direction = (int) list[1];
   reversals = (bigint) list[2];

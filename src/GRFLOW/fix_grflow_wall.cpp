@@ -26,6 +26,8 @@
 
 #include "fix_grflow_wall.h"
 
+#include "grflow_restart.h"
+
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
@@ -45,6 +47,9 @@ using namespace FixConst;
 static constexpr int NHIST = FixGRFLOWWall::NWALL * HIST_SIZE;
 static constexpr int NCONTACT = FixGRFLOWWall::NWALL * 4;
 static constexpr int NVECTOR = 6;    // per wall: Fx Fy Fz z dx dy
+// global restart data: per wall active, z, v (3), displacement (2)
+static constexpr int NRESTART = FixGRFLOWWall::NWALL * 7;
+static constexpr int RESTART_VERSION = 1;
 
 /* ---------------------------------------------------------------------- */
 
@@ -427,7 +432,7 @@ int FixGRFLOWWall::modify_param(int narg, char **arg)
 
 void FixGRFLOWWall::write_restart(FILE *fp)
 {
-  double list[NWALL * 7];
+  double list[NRESTART];
   int n = 0;
   for (const auto &w : walls) {
     list[n++] = w.active;
@@ -436,18 +441,20 @@ void FixGRFLOWWall::write_restart(FILE *fp)
     list[n++] = w.disp[0];
     list[n++] = w.disp[1];
   }
-  if (comm->me == 0) {
-    int size = n * sizeof(double);
-    fwrite(&size, sizeof(int), 1, fp);
-    fwrite(list, sizeof(double), n, fp);
-  }
+  write_restart_values(lmp, fp, RESTART_VERSION, list, NRESTART);
 }
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   format 1: the header of grflow_restart.h, then the values of
+   write_restart(); format 0 (files written before the header): the same
+   values without it
+------------------------------------------------------------------------- */
 
 void FixGRFLOWWall::restart(char *buf)
 {
-  auto list = (double *) buf;
+  int version;
+  const double *list = read_restart_values(lmp, fmt::format("Fix grflow/wall {}", id), buf,
+                                           RESTART_VERSION, NRESTART, version);
   int n = 0;
   for (auto &w : walls) {
     const int active = (int) list[n++];
