@@ -5,7 +5,7 @@ set -euo pipefail
 
 pkgs=(build-essential cmake ninja-build ccache xz-utils ca-certificates
       libopenmpi-dev openmpi-bin libgtest-dev libjpeg-dev libpng-dev
-      python3 python3-numpy python3-matplotlib python3-pytest clang-format)
+      python3 python3-numpy python3-matplotlib python3-pytest clang-format snakemake)
 
 missing=()
 for p in "${pkgs[@]}"; do

@@ -1,0 +1,142 @@
+"""workflows/resistance_curve.smk and workflows/curve.py: the cyclic
+resistance curve as one Snakemake workflow.
+
+- the fit recovers a known power law (exactly from exact data, within its
+  standard errors from noisy data);
+- a tiny campaign (2 CSR values, 1 seed, 300 spheres) runs end to end: one
+  CSR liquefies, the other is a run-out at max_cycles; the run directories
+  are ones analysis/make_figures.py reads;
+- stopped after one run, the campaign plans only the other run and the curve;
+- the SLURM profile's dry run plans the job graph without a cluster.
+
+Environment: LMP (lmp binary).
+"""
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+SMK = os.path.join(ROOT, "workflows", "resistance_curve.smk")
+PROFILE = os.path.join(ROOT, "workflows", "profiles", "slurm")
+sys.path.insert(0, os.path.join(ROOT, "workflows"))
+import curve  # noqa: E402
+
+LMP = os.environ.get("LMP", "lmp")
+SNAKEMAKE = shutil.which("snakemake")
+needs_snakemake = pytest.mark.skipif(SNAKEMAKE is None, reason="needs snakemake (Debian)")
+
+
+def test_fit_exact_power_law():
+    n = np.array([3.0, 7.0, 15.0, 40.0])
+    fit = curve.fit_power_law(0.4 * n ** -0.2, n)
+    assert fit["a"] == pytest.approx(0.4, rel=1e-12)
+    assert fit["b"] == pytest.approx(0.2, rel=1e-12)
+    assert fit["se_b"] == pytest.approx(0.0, abs=1e-12)
+
+
+def test_fit_noisy_power_law_within_its_errors():
+    # 3 seeds at 4 CSR values, lognormal scatter of N_IL (sd 0.3 in log N,
+    # as seed scatter might be): the estimates lie within 3 standard errors
+    # (a 99.7% band for normal errors) of the truth, for 200 campaigns in
+    # all but a few
+    rng = np.random.default_rng(20261124)
+    a, b = 0.35, 0.18
+    csr = np.repeat([0.15, 0.2, 0.25, 0.3], 3)
+    misses = 0
+    for _ in range(200):
+        n = (csr / a) ** (-1 / b) * np.exp(rng.normal(0, 0.3, csr.size))
+        fit = curve.fit_power_law(csr, n)
+        if abs(fit["b"] - b) > 3 * fit["se_b"] or \
+                abs(np.log(fit["a"]) - np.log(a)) > 3 * fit["se_log_a"]:
+            misses += 1
+    # expected about 0.6% each for b and log a with 10 degrees of freedom
+    # (t distribution: 1.3%); 10 of 200 would be far outside
+    assert misses <= 10
+
+
+def test_fit_needs_three_points_and_two_n():
+    assert curve.fit_power_law([0.2, 0.3], [10.0, 3.0]) is None
+    assert curve.fit_power_law([0.2, 0.3, 0.25], [5.0, 5.0, 5.0]) is None
+
+
+def planned(proc):
+    """{rule: job count} from the "Job stats" table of a dry run."""
+    jobs = {}
+    for line in (proc.stdout + proc.stderr).splitlines():
+        parts = line.split()
+        if len(parts) == 4 and all(p.isdigit() for p in parts[1:]):
+            jobs[parts[0]] = int(parts[1])
+    return jobs
+
+
+def snakemake(args, cwd, check=True):
+    proc = subprocess.run([SNAKEMAKE, "-s", SMK] + args, cwd=cwd, capture_output=True,
+                          text=True, timeout=900)
+    if check:
+        assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
+    return proc
+
+
+@needs_snakemake
+def test_tiny_campaign_end_to_end(tmp_path):
+    out = tmp_path / "curve"
+    config = ["--config", "csr=[0.45,0.05]", "seeds=[1]", f"out={out}", f"lmp={LMP}",
+              "vars=N 300", "max_cycles=5"]
+    # a campaign stopped after its first run (here: asked for that run
+    # only), then run again: only the missing run and the curve are
+    # planned, the preparation and the finished run are kept
+    snakemake(["--cores", "2", str(out / "seed1" / "csr0.45" / "run.json")] + config, tmp_path)
+    proc = snakemake(["-n", "--cores", "2"] + config, tmp_path)
+    assert planned(proc) == {"all": 1, "curve": 1, "shear": 1, "total": 3}, proc.stdout
+    snakemake(["--cores", "2"] + config, tmp_path)
+
+    c = json.loads((out / "curve.json").read_text())
+    runs = {r["csr"]: r for r in c["runs"]}
+    assert set(runs) == {0.45, 0.05}
+    assert runs[0.45]["liquefied"] and runs[0.45]["N_IL"] > 0
+    assert runs[0.45]["tau_amp"] == pytest.approx(45.0e3)
+    # the run-out: stopped by max_cycles, not liquefied
+    assert not runs[0.05]["liquefied"] and runs[0.05]["N_IL"] is None
+    log = (out / "seed1" / "csr0.05" / "log.shear.lammps").read_text()
+    assert "5 cycles, initial liquefaction not reached (run-out)" in log
+    # (the fix counts cycles as reversals/2; the analysis's N, which the
+    # curve uses, counts from the zero-crossings of tau and lags by up to
+    # a quarter cycle)
+    assert runs[0.05]["N_end"] >= 4.5
+    assert c["fit"] is None and "no fit" in c["fit_note"]
+    assert (out / "curve.png").stat().st_size > 0
+    assert "run-out" in (out / "curve.md").read_text()
+    # one preparation for both CSR values
+    assert (out / "seed1" / "csr0.45" / "prep.restart").resolve() == \
+        (out / "seed1" / "prep" / "prep.restart").resolve()
+
+    # a run directory is one analysis/make_figures.py reads
+    proc = subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "analysis", "make_figures.py"),
+                           str(out / "seed1" / "csr0.45")], capture_output=True, text=True,
+                          env=dict(os.environ, MPLBACKEND="Agg"), timeout=600)
+    assert proc.returncode == 0, proc.stdout[-2000:] + proc.stderr[-2000:]
+
+
+@needs_snakemake
+def test_slurm_profile_dry_run(tmp_path):
+    proc = snakemake(["-n", "--profile", PROFILE, "--config", "csr=[0.2,0.3]",
+                      "seeds=[1,2,3]", f"out={tmp_path / 'c'}", "preset=paper", "np=4"],
+                     tmp_path)
+    assert planned(proc) == {"all": 1, "curve": 1, "prep": 3, "shear": 6, "total": 11}, \
+        proc.stdout
+
+
+@needs_snakemake
+@pytest.mark.parametrize("bad,expect", [
+    ("csr=[0.2,-0.1]", "csr"), ("preset=fast", "preset fast"), ("vars=N", "NAME VALUE"),
+])
+def test_bad_config_is_refused(tmp_path, bad, expect):
+    proc = snakemake(["-n", "--cores", "1", "--config", bad, f"out={tmp_path}"], tmp_path,
+                     check=False)
+    assert proc.returncode != 0
+    assert expect in proc.stdout + proc.stderr
