@@ -12,7 +12,9 @@
 #   PREP_FROM=runs/dt PREP_FACTOR=0.1 bash bench/timestep_study.sh runs/dt-shear ...
 # takes PREP_FROM/s<seed>_f<PREP_FACTOR>/prep.restart (and prep.json) for
 # seed <seed>, so that only the shear stage's timestep differs; NP=2 runs
-# it on 2 MPI ranks (another summation order: the chaotic scatter).
+# it on 2 MPI ranks and OMP=2 on 2 OpenMP threads (-sf omp; other
+# summation orders: the chaotic scatter).  OUTDIR names the layout, so
+# that runs of one seed and timestep in several layouts do not collide.
 # A run directory that already has figures/summary.json is not run again.
 # The decks are frozen into OUTDIR/inputs at the first call (edits of
 # inputs/ during a study do not reach its runs); delete it to refreeze.
@@ -42,8 +44,9 @@ for seed in $seeds; do
     fi
     cmd=(taskset -c "${CPU:-0}" "$lmp")
     [ "${NP:-1}" -gt 1 ] && cmd=(mpirun --allow-run-as-root --oversubscribe -np "$NP" "$lmp")
+    [ "${OMP:-1}" -gt 1 ] && cmd=("$lmp" -sf omp -pk omp "$OMP")
     start=$(date +%s.%N)
-    OMP_NUM_THREADS=1 "${cmd[@]}" -log none -screen none \
+    OMP_NUM_THREADS=${OMP:-1} "${cmd[@]}" -log none -screen none \
       -in "$inputs/cyclic_shear.lmp" -var inputs "$inputs" -var outdir "$dir" \
       -var seed "$seed" -var dt_factor "$f" "${stage[@]}" "$@"
     end=$(date +%s.%N)
