@@ -449,6 +449,8 @@ TEST(Compress, BadInput)
       {"fix c all grflow/compress w net 1e5 10 ke_ratio 0", "ke_ratio must be > 0"},
       {"fix c all grflow/compress w net 1e5 10 every 0", "every must be >= 1"},
       {"fix c all grflow/compress w net 1e5 10 bogus 1", "Unknown fix grflow/compress keyword"},
+      {"fix c all grflow/compress w net 1e5 10 bogus", "Unknown fix grflow/compress keyword: bogus"},
+      {"fix c all grflow/compress w net 1e5 10 bogus x", "Unknown fix grflow/compress keyword: bogus"},
       {"fix c all grflow/compress w net 1e5 10 every", "fix grflow/compress every"},
       {"fix c all grflow/compress w net 1e5 ten", "Expected floating point"},
       {"fix c all grflow/compress w net 1e5 10 elastic 3", "elastic takes an equal-style variable"},

@@ -526,6 +526,7 @@ TEST_F(Shear, BadArguments)
       {"fix sh all grflow/shear w net 0.02 -5", "tau_amp must be > 0"},
       {"fix sh all grflow/shear w net abc 1000", "Expected floating point"},
       {"fix sh all grflow/shear w net 0.02 1000 foo 1", "Unknown fix grflow/shear keyword: foo"},
+      {"fix sh all grflow/shear w net 0.02 1000 foo", "Unknown fix grflow/shear keyword: foo"},
       {"fix sh all grflow/shear w net 0.02 1000 every", "fix grflow/shear every"},
       {"fix sh all grflow/shear w net 0.02 1000 every 0", "Fix grflow/shear every must be >= 1"},
       {"fix sh all grflow/shear w net 0.02 1000 every 2.5", "Expected integer"},

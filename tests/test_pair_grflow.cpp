@@ -637,6 +637,15 @@ TEST(PairGRFLOWErrors, NeedsSpheresAndGhostVelocities)
   setup = sphere_box;
   msg = error_after(setup, "run 0");
   EXPECT_NE(msg.find("All pair coeffs are not set"), std::string::npos) << msg;
+
+  // rRESPA, as the doc page says
+  setup = sphere_box;
+  setup.insert(setup.end(), {"pair_coeff * * 1.0e6 1.15", "comm_modify vel yes",
+                             "run_style respa 2 2"});
+  msg = error_after(setup, "run 0");
+  EXPECT_NE(msg.find("Pair style granular/grflow does not support run_style respa"),
+            std::string::npos)
+      << msg;
 }
 
 }    // namespace

@@ -103,6 +103,9 @@ FixGRFLOWCompress::FixGRFLOWCompress(LAMMPS *lmp, int narg, char **arg) :
   int iarg = 7;
   while (iarg < narg) {
     const std::string kw = arg[iarg];
+    // an unknown keyword is reported as such, before its value is read
+    if (kw != "elastic" && kw != "gain" && kw != "tol" && kw != "ke_ratio" && kw != "every")
+      error->all(FLERR, "Unknown fix grflow/compress keyword: {}", kw);
     if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, "fix grflow/compress " + kw, error);
     if (kw == "elastic") {
       if (!utils::strmatch(arg[iarg + 1], "^v_"))
@@ -114,7 +117,7 @@ FixGRFLOWCompress::FixGRFLOWCompress(LAMMPS *lmp, int narg, char **arg) :
       iarg += 2;
       continue;
     }
-    const double value = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    const double value = (kw == "every") ? 0.0 : utils::numeric(FLERR, arg[iarg + 1], false, lmp);
     if (kw == "gain") {
       gain = value;
       if (gain <= 0.0) error->all(FLERR, "Fix grflow/compress gain must be > 0, got {}", value);

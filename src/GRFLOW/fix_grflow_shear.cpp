@@ -76,6 +76,10 @@ FixGRFLOWShear::FixGRFLOWShear(LAMMPS *lmp, int narg, char **arg) :
   int iarg = 7;
   while (iarg < narg) {
     const std::string kw = arg[iarg];
+    // an unknown keyword is reported as such, also at the end of the line
+    if (kw != "every" && kw != "liquefaction" && kw != "stop_cycles" &&
+        kw != "stop_after_liquefaction" && kw != "stop_gamma" && kw != "progress" && kw != "glue")
+      error->all(FLERR, "Unknown fix grflow/shear keyword: {}", kw);
     if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, "fix grflow/shear " + kw, error);
     if (kw == "every") {
       check_every = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);

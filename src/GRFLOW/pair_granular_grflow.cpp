@@ -214,6 +214,9 @@ void PairGranularGRFLOW::init_style()
                "Pair style granular/grflow requires ghost atoms to store velocity: "
                "use comm_modify vel yes");
 
+  if (utils::strmatch(update->integrate_style, "^respa"))
+    error->all(FLERR, "Pair style granular/grflow does not support run_style respa");
+
   neighbor->add_request(this, NeighConst::REQ_SIZE | NeighConst::REQ_HISTORY);
 
   dt = update->dt;
