@@ -138,7 +138,7 @@ def figure(c, path):
                 label="CSR = %.3g N$^{-%.3g \\pm %.2g}$" % (f["a"], f["b"], f["se_b"]))
     ax.set_xscale("log")
     ax.set_xlabel("cycles to initial liquefaction N$_{IL}$ (open: run-out)")
-    ax.set_ylabel("CSR = tau_amp / p0")
+    ax.set_ylabel("CSR = tau_amp / p_target")
     ax.legend(fontsize=8)
     ax.grid(True, which="both", alpha=0.3)
     fig.tight_layout()
