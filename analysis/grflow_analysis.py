@@ -527,6 +527,20 @@ def connectivity(series, row):
     return np.array([series[c][row] if c in series else np.nan for c in PC_COLUMNS])
 
 
+def connectivity_non_floaters(series, row):
+    """P_c over the particles with at least one contact, c = 1..12: the
+    written P_c divided by 1 - P_0 (NaN where every particle is a
+    floater).  Index 0 is 0 by construction, so that the array lines up
+    with connectivity()."""
+    pc = connectivity(series, row)
+    rest = 1.0 - pc[0]
+    out = np.full_like(pc, np.nan)
+    if rest > 0.0:
+        out = pc / rest
+        out[0] = 0.0
+    return out
+
+
 def peak_ac_per_cycle(series, N):
     """Maximum a_c in each cycle n (rows with floor(N) == n), n = 0 .. floor(max N)."""
     cyc = np.floor(N + 1e-12).astype(np.int64)
@@ -744,7 +758,8 @@ def summary(series, prep=None, cycle_index=None):
                 "tau": _num(series["tau"][r]), "p": _num(series["p"][r]),
                 "r_u": _num(series["r_u"][r]), "gamma": _num(series["gamma"][r]),
                 "z_g": _num(zg[r]), "a_c": _num(series["a_c"][r]),
-                "P_c": [_num(v) for v in connectivity(series, r)]}
+                "P_c": [_num(v) for v in connectivity(series, r)],
+                "P_c_non_floaters": [_num(v) for v in connectivity_non_floaters(series, r)]}
     return {
         "ru_liq": ru_liq, "tau_amp": tau_amp,
         "rows": int(len(N)), "last_step": int(series["step"][-1]),
@@ -796,16 +811,28 @@ def summary_markdown(s):
         lines.append("Cycle C: cycle %d (N = %d to %d)." % (c["cycle"], c["cycle"],
                                                            c["cycle"] + 1))
         lines.append("")
-        lines.append("| state | step | N | tau | p | r_u | gamma | z_g | a_c |")
-        lines.append("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+        lines.append("| state | step | N | tau | p | r_u | gamma | z_g | a_c | P_0 | "
+                     "c < 4 among particles with contacts |")
+        lines.append("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
         for st, d in c["states"].items():
             if isinstance(d, str):
-                lines.append("| %s | %s |  |  |  |  |  |  |  |" % (st, d))
+                lines.append("| %s | %s |  |  |  |  |  |  |  |  |  |" % (st, d))
             else:
                 gam = None if d["gamma"] is None else 100 * d["gamma"]
-                lines.append("| %s | %d | %.4g | %s | %s | %s | %s%% | %s | %s |" % (
+                nf = d.get("P_c_non_floaters") or []
+                low = (sum(v for v in nf[1:4] if v is not None)
+                       if len(nf) >= 4 and all(v is not None for v in nf[1:4]) else None)
+                p0 = d["P_c"][0] if d.get("P_c") else None
+                lines.append("| %s | %d | %.4g | %s | %s | %s | %s%% | %s | %s | %s | %s |" % (
                     st, d["step"], d["N"], _fmt(d["tau"], "Pa"), _fmt(d["p"], "Pa"),
-                    _fmt(d["r_u"]), _fmt(gam), _fmt(d["z_g"]), _fmt(d["a_c"])))
+                    _fmt(d["r_u"]), _fmt(gam), _fmt(d["z_g"]), _fmt(d["a_c"]), _fmt(p0),
+                    _fmt(low)))
+        lines.append("")
+        lines.append("P_0: floaters among the sub-volume's particles.  The last column is "
+                     "P_1 + P_2 + P_3 over the particles with contacts (P_c / (1 - P_0)); "
+                     "the paper reads its Fig. 4 as \"a high proportion of particles with "
+                     "c < 4\" at C0 and C2, a fragile network that \"disappears\" at C0' "
+                     "and C2'.")
     lines.append("")
     lines.append("ru_liq = %g, tau_amp = %g kPa, %d rows, last step %d, N_end = %.4g."
                  % (s["ru_liq"], s["tau_amp"] / 1e3, s["rows"], s["last_step"], s["N_end"]))

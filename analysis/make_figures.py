@@ -292,35 +292,46 @@ def fig3(run, out):
 # ---------------------------------------------------------------- Fig. 4
 
 def fig4(run, out):
-    """P_c at the six states of cycle C, grouped bars."""
-    fig, ax = plt.subplots(figsize=(11, 5.5))
+    """P_c at the six states of cycle C, grouped bars: (a) over all the
+    particles of the sub-volume, as the paper's Fig. 4, and (b) over the
+    particles with at least one contact (P_c / (1 - P_0)), where the
+    paper's reading ("a high proportion of particles with c < 4" at the
+    liquefied states) can be seen when floaters dominate (a)."""
+    fig, axes = plt.subplots(1, 2, figsize=(15, 5.5))
     c = np.arange(13)
     width = 0.13
     found = 0
-    if run.states is not None:
+    for k, ax in enumerate(axes):
+        if run.states is None:
+            continue
         for j, st in enumerate(ga.STATES):
             r = run.states[st]
             x = c + (j - 2.5) * width
             if r is None:
                 ax.bar([], [], color=COLOR[st], label=LABEL[st] + " (not found)")
                 continue
-            ax.bar(x, ga.connectivity(run.s, r), width, color=COLOR[st], edgecolor="k",
-                   linewidth=0.3, label="%s: N = %.3f, $z_g$ = %.2f, $r_u$ = %.3f"
-                   % (LABEL[st], run.N[r], run.s["z_g"][r], run.s["r_u"][r]))
-            found += 1
-    ax.set_xticks(c)
-    ax.set_xticklabels([str(i) for i in c[:-1]] + [r"$\geq$12"])
-    ax.set_xlabel("number of contacts c")
-    ax.set_ylabel("$P_c$ (fraction of particles)")
-    if run.n is None:
-        ax.set_title("Fig. 4: connectivity in cycle C")
-        ax.set_ylim(0, 1)
-        _not_reached(ax, "cycle C not found: " + run.note)
-    else:
-        ax.set_title("Fig. 4: connectivity at the characteristic states of cycle C "
-                     "(N = %d-%d)" % (run.n, run.n + 1))
+            pc = (ga.connectivity(run.s, r) if k == 0
+                  else ga.connectivity_non_floaters(run.s, r))
+            ax.bar(x, pc, width, color=COLOR[st], edgecolor="k", linewidth=0.3,
+                   label="%s: N = %.3f, $z_g$ = %.2f, $r_u$ = %.3f, $P_0$ = %.2f"
+                   % (LABEL[st], run.N[r], run.s["z_g"][r], run.s["r_u"][r],
+                      ga.connectivity(run.s, r)[0]))
+            found += k == 0
+    for k, ax in enumerate(axes):
+        ax.set_xticks(c)
+        ax.set_xticklabels([str(i) for i in c[:-1]] + [r"$\geq$12"])
+        ax.set_xlabel("number of contacts c")
+        ax.set_ylabel("$P_c$ (fraction of all particles)" if k == 0
+                      else "$P_c / (1 - P_0)$ (fraction of particles with contacts)")
+        if run.n is None:
+            ax.set_title("Fig. 4: connectivity in cycle C")
+            ax.set_ylim(0, 1)
+            _not_reached(ax, "cycle C not found: " + run.note)
+            continue
+        ax.set_title(("(a) all particles" if k == 0 else "(b) particles with contacts")
+                     + ", cycle C (N = %d-%d)" % (run.n, run.n + 1))
         ax.set_ylim(bottom=0)
-        ax.legend(fontsize=8, loc="upper right")
+        ax.legend(fontsize=7, loc="upper right")
         if found < len(ga.STATES):
             _not_reached(ax, "%d of 6 states not found in this cycle"
                          % (len(ga.STATES) - found), 0.55)

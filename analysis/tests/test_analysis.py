@@ -334,6 +334,12 @@ def test_cycle_states(liquefied_run):
     assert ga.choose_cycle(s, 0.99, index=3)[0] is None
     r = st["C1"]
     np.testing.assert_array_equal(ga.connectivity(s, r), [col["P%d" % c][r] for c in range(13)])
+    # over the particles with contacts: P_c / (1 - P_0), P_0 entry 0, sums to 1
+    pc = np.array([col["P%d" % c][r] for c in range(13)])
+    nf = ga.connectivity_non_floaters(s, r)
+    assert nf[0] == 0.0
+    np.testing.assert_allclose(nf[1:], pc[1:] / (1.0 - pc[0]), rtol=1e-15)
+    assert nf.sum() == pytest.approx(1.0, abs=1e-12)
     assert ga.cycle_rows(s, 6) == (row_at(Ns, F(6)), row_at(Ns, F(7)))
 
 
@@ -401,6 +407,14 @@ def test_summary_liquefied(liquefied_run):
     assert summ["cycle_C"]["cycle"] == 6
     assert summ["cycle_C"]["states"]["C2'"]["N"] == pytest.approx(6.6, abs=1e-12)
     assert summ["cycle_C"]["states"]["C2'"]["z_g"] == EXIT_ZG[4]
+
+
+def test_connectivity_non_floaters_all_floaters():
+    # every particle a floater: no distribution over particles with contacts
+    series = {"P0": np.array([1.0])}
+    for c in range(1, 13):
+        series["P%d" % c] = np.array([0.0])
+    assert np.all(np.isnan(ga.connectivity_non_floaters(series, 0)))
 
 
 def test_inertial_stats_undefined_rows_and_split():
