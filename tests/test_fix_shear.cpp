@@ -255,19 +255,22 @@ TEST_F(Shear, P0RuAndInitialLiquefaction)
   EXPECT_GT(rec.back().sh[CYCLES_IL], 0.0);
 }
 
-// the fix's p0, not the compute's own p0, defines r_u from the start: a
-// compute p0 of 2 p must not record liquefaction at the first check
-TEST_F(Shear, ComputeP0DoesNotLeakIntoTheFirstCheck)
+// p0 has one owner: the fix records it when shearing starts, so a compute
+// with a p0 keyword of its own is refused (the fix used to overwrite it)
+TEST_F(Shear, ComputeWithItsOwnP0IsRefused)
 {
-  Lammps lmp;
-  const double p = read(lmp);
-  lmp.cmds({"uncompute net", "compute net all grflow/network zlimits v_zlo v_zhi p0 " +
-                                 fmt_double(2.0 * p),
-            shear_cmd(p, "liquefaction 0.3"), "run 0 post no"});
-  const auto s = shear(lmp);
-  EXPECT_EQ(s[P0], p);
-  EXPECT_EQ(s[RU], 0.0);
-  EXPECT_EQ(s[STEP_IL], -1.0);
+  for (const char *p0 : {"p0 1.0e5", "p0 first"}) {
+    Lammps lmp;
+    const double p = read(lmp);
+    lmp.cmds({"uncompute net",
+              std::string("compute net all grflow/network zlimits v_zlo v_zhi ") + p0,
+              shear_cmd(p, "liquefaction 0.3")});
+    const std::string msg = lmp.error_of("run 0 post no");
+    EXPECT_NE(msg.find("sets p0 of compute net when shearing starts: remove the compute's p0 "
+                       "keyword"),
+              std::string::npos)
+        << p0 << ": " << msg;
+  }
 }
 
 TEST_F(Shear, GluedLayerMovesWithTheWall)

@@ -59,6 +59,7 @@ ComputeGRFLOWNetwork::ComputeGRFLOWNetwork(LAMMPS *lmp, int narg, char **arg) :
   slab = 0.8;
   p0 = 0.0;
   p0flag = p0first = 0;
+  p0_keyword = false;
   nmax = 0;
   commflag = INSIDE;
 
@@ -106,6 +107,7 @@ ComputeGRFLOWNetwork::ComputeGRFLOWNetwork(LAMMPS *lmp, int narg, char **arg) :
       iarg += 2;
     } else if (kw == "p0") {
       if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, cmd, error);
+      p0_keyword = true;
       if (strcmp(arg[iarg + 1], "first") == 0) {
         p0first = 1;
         p0flag = 0;

@@ -50,6 +50,9 @@ class ComputeGRFLOWNetwork : public Compute {
     p0 = value;
     p0flag = 1;
   }
+  // true if the command gave the p0 keyword (then a fix must not set p0:
+  // each p0 has one owner)
+  bool has_p0_keyword() const { return p0_keyword; }
 
   // positions of the output vector entries (0-based)
   // clang-format off
@@ -69,6 +72,7 @@ class ComputeGRFLOWNetwork : public Compute {
   char *volume_str;    // volume of a non-block region: number or v_name
   double p0;
   int p0flag, p0first;
+  bool p0_keyword;
 
   std::vector<class FixGRFLOWWall *> walls;
 

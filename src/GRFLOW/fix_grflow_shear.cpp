@@ -164,6 +164,11 @@ void FixGRFLOWShear::init()
 {
   wall = FixGRFLOWWall::find_cell(lmp, "Fix grflow/shear", id_wall);
   network = ComputeGRFLOWNetwork::find(lmp, "Fix grflow/shear", id_network);
+  if (network->has_p0_keyword())
+    error->all(FLERR,
+               "Fix grflow/shear {} sets p0 of compute {} when shearing starts: remove the "
+               "compute's p0 keyword",
+               id, id_network);
 
   if (iglue >= 0) {
     // group delete guards only a fix's own group
