@@ -459,6 +459,26 @@ double PairGranularGRFLOW::single(int i, int j, int itype, int jtype, double rsq
 }
 
 /* ----------------------------------------------------------------------
+   two atoms at the same position: the contact normal is undefined
+------------------------------------------------------------------------- */
+
+void PairGranularGRFLOW::same_position(int iifrom, int iito)
+{
+  double **x = atom->x;
+  for (int ii = iifrom; ii < iito; ii++) {
+    const int i = list->ilist[ii];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = list->firstneigh[i][jj] & NEIGHMASK;
+      if (x[i][0] == x[j][0] && x[i][1] == x[j][1] && x[i][2] == x[j][2])
+        error->one(FLERR,
+                   "Pair granular/grflow: atoms {} and {} are at the same position {} {} {}: "
+                   "the contact normal is undefined",
+                   atom->tag[i], atom->tag[j], x[i][0], x[i][1], x[i][2]);
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
    copy the history of pair I,J as seen from I into hist; zero if the pair
    is not in I's neighbors nor (for an owned J) J's neighbors
 ------------------------------------------------------------------------- */

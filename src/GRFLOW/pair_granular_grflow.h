@@ -73,6 +73,14 @@ class PairGranularGRFLOW : public Pair {
   void eval(int, int, int, double *const *, double *const *, const Tally &);
   void write_coeffs(FILE *, int, int, bool);
   void find_history(int, int, double *);
+  // error naming the first two atoms at the same position (no contact
+  // normal) among the pairs of ilist[iifrom..iito); called by the pair
+  // loop after it counted such a pair
+#if defined(__GNUC__) || defined(__clang__)
+  __attribute__((noinline, cold))
+#endif
+  void
+  same_position(int, int);
 };
 
 }    // namespace LAMMPS_NS
