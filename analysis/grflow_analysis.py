@@ -575,6 +575,12 @@ PAPER = {
                   "liquefaction'"),
     "z_g_post_IL_max": (4.0, 0.0, "max",
                         "Sec. 4: 'In the post-liquefaction period, z_g stays below 4.0'"),
+    "nonliq_zg_at_least_3.6": (None, None, None,
+                               "Sec. 4 (Fig. 5): 'The non-liquefaction states belong to the "
+                               "region of z_g >= 3.6'; no fraction given"),
+    "liq_zg_max": (None, None, None,
+                   "Sec. 4: the liquefied states lie below z_g = 3.6 by the same reading; "
+                   "no number given"),
     "z_g_post_IL_min": (1.5, 0.5, "abs",
                         "Sec. 4: z_g 'fluctuates significantly down to values as low "
                         "as 1.5'"),
@@ -704,6 +710,11 @@ def summary(series, prep=None, cycle_index=None):
                    NOT_REACHED),
             _entry("z_g_post_IL_min", "smallest z_g after initial liquefaction", "-",
                    NOT_REACHED),
+            _entry("nonliq_zg_at_least_3.6",
+                   "fraction of the rows after initial liquefaction with r_u < ru_liq that "
+                   "have z_g >= 3.6", "-", NOT_REACHED),
+            _entry("liq_zg_max", "largest z_g of the rows with r_u >= ru_liq", "-",
+                   NOT_REACHED),
         ]
     else:
         post = zg[onset:][np.isfinite(zg[onset:])]
@@ -715,6 +726,22 @@ def summary(series, prep=None, cycle_index=None):
                    float(post.max()) if len(post) else NOT_REACHED),
             _entry("z_g_post_IL_min", "smallest z_g after initial liquefaction", "-",
                    float(post.min()) if len(post) else NOT_REACHED),
+        ]
+        # the paper's division of the states at z_g = 3.6, from initial
+        # liquefaction on: rows not liquefied (r_u < ru_liq) with z_g >= 3.6,
+        # and the largest z_g of the liquefied rows
+        ru_post = series["r_u"][onset:]
+        zg_post = zg[onset:]
+        ok = np.isfinite(ru_post) & np.isfinite(zg_post)
+        nonliq = ok & (ru_post < ru_liq)
+        liqrows = ok & (ru_post >= ru_liq)
+        entries += [
+            _entry("nonliq_zg_at_least_3.6",
+                   "fraction of the rows after initial liquefaction with r_u < ru_liq that "
+                   "have z_g >= 3.6", "-",
+                   float(np.mean(zg_post[nonliq] >= 3.6)) if nonliq.any() else NOT_REACHED),
+            _entry("liq_zg_max", "largest z_g of the rows with r_u >= ru_liq", "-",
+                   float(zg_post[liqrows].max()) if liqrows.any() else NOT_REACHED),
         ]
     ex = liq["exits"]
     zex = [float(zg[i]) for i in ex]

@@ -435,6 +435,23 @@ def test_inertial_stats_undefined_rows_and_split():
     assert st["max"] == ga.NOT_AVAILABLE and st["p_min_post_IL"] == 0.0
 
 
+def test_summary_splits_states_at_3_6(liquefied_run):
+    # counted by hand from the construction: rows from the onset on, split
+    # by r_u at 0.99
+    root, col, Ns, Nf = liquefied_run
+    s = ga.read_series(os.path.join(root, "series.txt"))
+    e = entries(ga.summary(s, ga.read_prep(os.path.join(root, "prep.json"))))
+    onset = next(k for k, ru in enumerate(col["r_u"]) if ru >= 0.99)
+    nonliq = [zg for ru, zg in zip(col["r_u"][onset:], col["z_g"][onset:]) if ru < 0.99]
+    liq = [zg for ru, zg in zip(col["r_u"][onset:], col["z_g"][onset:]) if ru >= 0.99]
+    assert len(nonliq) > 0 and len(liq) > 0
+    frac = sum(1 for zg in nonliq if zg >= 3.6) / len(nonliq)
+    assert 0.0 < frac < 1.0    # the construction has both kinds
+    assert e["nonliq_zg_at_least_3.6"]["measured"] == pytest.approx(frac, abs=1e-15)
+    assert e["liq_zg_max"]["measured"] == max(liq)
+    assert e["nonliq_zg_at_least_3.6"]["match"] is None
+
+
 def test_summary_never_liquefied(dry_run):
     root, _, _, _ = dry_run
     s = ga.read_series(os.path.join(root, "series.txt"))
