@@ -7,6 +7,8 @@ resistance curve as one Snakemake workflow.
   CSR liquefies, the other is a run-out at max_cycles; the run directories
   are ones analysis/make_figures.py reads;
 - stopped after one run, the campaign plans only the other run and the curve;
+  killed during a run, it plans that run, the rest and the curve, not the
+  preparation;
 - the SLURM profile's dry run plans the job graph without a cluster.
 
 Environment: LMP (lmp binary).
@@ -120,6 +122,39 @@ def test_tiny_campaign_end_to_end(tmp_path):
                            str(out / "seed1" / "csr0.45")], capture_output=True, text=True,
                           env=dict(os.environ, MPLBACKEND="Agg"), timeout=600)
     assert proc.returncode == 0, proc.stdout[-2000:] + proc.stderr[-2000:]
+
+
+@needs_snakemake
+def test_killed_campaign_reruns_only_the_missing_work(tmp_path):
+    """snakemake killed (SIGKILL, with its lmp) while a shear run is under
+    way; after --unlock, the same command with --rerun-incomplete plans that run,
+    the runs never started and the curve, but not the finished
+    preparation."""
+    import signal
+    import time
+    out = tmp_path / "curve"
+    config = ["--config", "csr=[0.45,0.3]", "seeds=[1]", f"out={out}", f"lmp={LMP}",
+              "vars=N 300", "max_cycles=20"]
+    proc = subprocess.Popen([SNAKEMAKE, "-s", SMK, "--cores", "1"] + config, cwd=tmp_path,
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                            start_new_session=True)
+    deadline = time.time() + 600
+    # a shear run has written its first series rows
+    while not any(p.stat().st_size > 2000 for p in out.glob("seed1/csr*/series.txt")):
+        assert proc.poll() is None, "the campaign ended before it was killed"
+        assert time.time() < deadline
+        time.sleep(0.1)
+    os.killpg(proc.pid, signal.SIGKILL)
+    proc.wait()
+    assert (out / "seed1" / "prep" / "prep.restart").exists()
+    assert not (out / "curve.json").exists()
+    # a kill leaves Snakemake's lock: --unlock, as its message says
+    snakemake(["--unlock"] + config, tmp_path)
+    plan = snakemake(["-n", "--rerun-incomplete", "--cores", "1"] + config, tmp_path)
+    assert planned(plan) == {"all": 1, "curve": 1, "shear": 2, "total": 4}, plan.stdout
+    snakemake(["--rerun-incomplete", "--cores", "2"] + config, tmp_path)
+    c = json.loads((out / "curve.json").read_text())
+    assert sorted(r["csr"] for r in c["runs"]) == [0.3, 0.45]
 
 
 @needs_snakemake
