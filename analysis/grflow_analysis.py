@@ -581,6 +581,15 @@ PAPER = {
     "liq_zg_max": (None, None, None,
                    "Sec. 4: the liquefied states lie below z_g = 3.6 by the same reading; "
                    "no number given"),
+    "a_c_change_C0_C0p": (None, None, None,
+                          "Sec. 4: from C0 to C0' z_g and a_c 'vary significantly' "
+                          "(anisotropic gain of contacts); no number given"),
+    "a_c_change_C0p_C1": (None, None, None,
+                          "Sec. 4: between C0' and C1 'a_c is nearly constant' (isotropic "
+                          "gain of contacts); no number given"),
+    "a_c_change_C1_C2": (None, None, None,
+                         "Sec. 4: between C1 and C2 'a_c is nearly constant' (isotropic "
+                         "loss of contacts); no number given"),
     "z_g_post_IL_min": (1.5, 0.5, "abs",
                         "Sec. 4: z_g 'fluctuates significantly down to values as low "
                         "as 1.5'"),
@@ -773,6 +782,29 @@ def summary(series, prep=None, cycle_index=None):
                           "-", peak_ac_per_cycle(series, N)))
 
     n, states, note = choose_cycle(series, ru_liq, cycle_index, events, liq)
+
+    # the paper's reading of Fig. 5 on cycle C: a_c changes much from C0 to
+    # C0', little from C0' to C1 and from C1 to C2 (a_c at the later state
+    # minus a_c at the earlier, with the change of z_g beside it in the
+    # description)
+    def change(a, b):
+        if n is None or states.get(a) is None or states.get(b) is None:
+            return NOT_REACHED
+        return float(series["a_c"][states[b]] - series["a_c"][states[a]])
+
+    def zg_change(a, b):
+        if n is None or states.get(a) is None or states.get(b) is None:
+            return ""
+        return ", z_g %+.3g" % float(zg[states[b]] - zg[states[a]])
+
+    entries += [
+        _entry("a_c_change_C0_C0p", "change of a_c from C0 to C0' in cycle C" +
+               zg_change("C0", "C0'"), "-", change("C0", "C0'")),
+        _entry("a_c_change_C0p_C1", "change of a_c from C0' to C1 in cycle C" +
+               zg_change("C0'", "C1"), "-", change("C0'", "C1")),
+        _entry("a_c_change_C1_C2", "change of a_c from C1 to C2 in cycle C" +
+               zg_change("C1", "C2"), "-", change("C1", "C2")),
+    ]
     cyc = {"cycle": n, "index_among_post_IL": cycle_index, "note": note, "states": {}}
     if n is not None:
         for s in STATES:

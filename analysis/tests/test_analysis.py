@@ -435,6 +435,19 @@ def test_inertial_stats_undefined_rows_and_split():
     assert st["max"] == ga.NOT_AVAILABLE and st["p_min_post_IL"] == 0.0
 
 
+def test_summary_a_c_changes_in_cycle_C(liquefied_run):
+    # a_c at the states of cycle C, from the construction's rows
+    root, col, Ns, Nf = liquefied_run
+    s = ga.read_series(os.path.join(root, "series.txt"))
+    summ = ga.summary(s, ga.read_prep(os.path.join(root, "prep.json")))
+    e = entries(summ)
+    st = {k: v["row"] for k, v in summ["cycle_C"]["states"].items()}
+    for name, a, b in (("a_c_change_C0_C0p", "C0", "C0'"), ("a_c_change_C0p_C1", "C0'", "C1"),
+                       ("a_c_change_C1_C2", "C1", "C2")):
+        assert e[name]["measured"] == col["a_c"][st[b]] - col["a_c"][st[a]], name
+        assert e[name]["match"] is None
+
+
 def test_summary_splits_states_at_3_6(liquefied_run):
     # counted by hand from the construction: rows from the onset on, split
     # by r_u at 0.99
