@@ -542,6 +542,7 @@ double PairGranularGRFLOW::memory_usage()
   return n * n * (NCOEFF * sizeof(double) + sizeof(ContactCoeffs));
 }
 
+#if GRFLOW_PAIR_HAS_ATOM2CUT
 /* ----------------------------------------------------------------------
    self-interaction range of particle
 ------------------------------------------------------------------------- */
@@ -559,3 +560,4 @@ double PairGranularGRFLOW::radii2cut(double r1, double r2)
 {
   return r1 + r2;
 }
+#endif

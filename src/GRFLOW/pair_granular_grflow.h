@@ -21,6 +21,7 @@ PairStyle(granular/grflow,PairGranularGRFLOW);
 #define LMP_PAIR_GRANULAR_GRFLOW_H
 
 #include "grflow_coeffs.h"
+#include "grflow_lammps_api.h"
 #include "pair.h"
 
 namespace LAMMPS_NS {
@@ -46,8 +47,10 @@ class PairGranularGRFLOW : public Pair {
   void *extract(const char *, int &) override;
   void transfer_history(double *, double *, int, int) override;
   double memory_usage() override;
+#if GRFLOW_PAIR_HAS_ATOM2CUT
   double atom2cut(int) override;
   double radii2cut(double, double) override;
+#endif
 
  protected:
   double dt;
