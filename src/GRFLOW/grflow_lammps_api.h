@@ -17,9 +17,8 @@
    Pair::atom2cut() and Pair::radii2cut(): virtual in LAMMPS 4Feb2025
    (the per-atom cutoffs of finite-size particles for "neighbor multi"),
    gone in 4Jul2026 (the neighbor code uses the radii itself).
-   GRFLOW_PAIR_HAS_ATOM2CUT is 1 where they exist.  The GRFLOW builds
-   (CMakeLists.txt, plugin/CMakeLists.txt) set it from the LAMMPS tree's
-   pair.h; otherwise it is inferred from a header that 4Jul2026 has and
+   GRFLOW_PAIR_HAS_ATOM2CUT is 1 where they exist.  The GRFLOW builds set
+   it from the LAMMPS tree's pair.h (cmake/GRFLOWCompileSettings.cmake); otherwise it is inferred from a header that 4Jul2026 has and
    4Feb2025 does not (nbin_manual.h), which is right for those two
    versions.
 ------------------------------------------------------------------------- */
