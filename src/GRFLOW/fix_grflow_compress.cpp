@@ -117,7 +117,14 @@ FixGRFLOWCompress::FixGRFLOWCompress(LAMMPS *lmp, int narg, char **arg) :
       iarg += 2;
       continue;
     }
-    const double value = (kw == "every") ? 0.0 : utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+    if (kw == "every") {
+      servo_every = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (servo_every < 1)
+        error->all(FLERR, "Fix grflow/compress every must be >= 1, got {}", servo_every);
+      iarg += 2;
+      continue;
+    }
+    const double value = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
     if (kw == "gain") {
       gain = value;
       if (gain <= 0.0) error->all(FLERR, "Fix grflow/compress gain must be > 0, got {}", value);
@@ -128,12 +135,6 @@ FixGRFLOWCompress::FixGRFLOWCompress(LAMMPS *lmp, int narg, char **arg) :
       ke_ratio_max = value;
       if (ke_ratio_max <= 0.0)
         error->all(FLERR, "Fix grflow/compress ke_ratio must be > 0, got {}", value);
-    } else if (kw == "every") {
-      servo_every = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
-      if (servo_every < 1)
-        error->all(FLERR, "Fix grflow/compress every must be >= 1, got {}", servo_every);
-    } else {
-      error->all(FLERR, "Unknown fix grflow/compress keyword: {}", kw);
     }
     iarg += 2;
   }
