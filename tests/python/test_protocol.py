@@ -220,23 +220,24 @@ def test_sizes_follow_the_papers_distribution(protocol):
     assert prep["d_mean"] == pytest.approx(4.0 / 3.0 * 1e-3, rel=1e-9)
 
 
+def shear_dir(out, src):
+    """A run directory for the shear stage alone, from src's prep.restart."""
+    (out / "snapshots").mkdir(parents=True)
+    (out / "prep.restart").symlink_to(src / "prep.restart")
+    return out
+
+
 def test_kill_and_resume_gives_one_series(protocol, tmp_path):
     src, _ = protocol
     # shear stage only, from the prepared sample, over a fixed horizon
     common = dict(SMALL, stage="shear", restart_every=4000, max_steps=20000,
                   n_post=1000)
 
-    def fresh(name):
-        out = tmp_path / name
-        (out / "snapshots").mkdir(parents=True)
-        (out / "prep.restart").symlink_to(src / "prep.restart")
-        return out
-
-    ref = fresh("ref")
+    ref = shear_dir(tmp_path / "ref", src)
     run(ref, **common)
     ref_rows = read_series(ref / "series.txt")
 
-    killed = fresh("killed")
+    killed = shear_dir(tmp_path / "killed", src)
     proc = subprocess.Popen(lmp_cmd(killed, **common), stdout=subprocess.DEVNULL,
                             stderr=subprocess.DEVNULL)
     deadline = time.time() + 600
@@ -306,18 +307,12 @@ def test_resume_before_the_first_restart_file(protocol, tmp_path):
     common = dict(SMALL, stage="shear", restart_every=1000000, max_steps=40000,
                   n_post=1000)
 
-    def fresh(name):
-        out = tmp_path / name
-        (out / "snapshots").mkdir(parents=True)
-        (out / "prep.restart").symlink_to(src / "prep.restart")
-        return out
-
-    ref = fresh("ref")
+    ref = shear_dir(tmp_path / "ref", src)
     run(ref, **common)
     ref_text = (ref / "series.txt").read_text()
     assert (ref / "shear.restart.0").read_bytes() == (src / "prep.restart").read_bytes()
 
-    killed = fresh("killed")
+    killed = shear_dir(tmp_path / "killed", src)
     proc = subprocess.Popen(lmp_cmd(killed, **common), stdout=subprocess.DEVNULL,
                             stderr=subprocess.DEVNULL)
     deadline = time.time() + 600
@@ -498,6 +493,8 @@ def test_contact_ratios_reach_particles_and_walls(tmp_path, deck):
     ({"v_x": "0"}, "v_x 0 must be > 0"),
     ({"skin_factor": "0"}, "skin_factor 0 must be > 0"),
     ({"check_every": "0"}, "each must be >= 1"),
+    ({"max_cycles": "-1"}, "max_cycles -1 must be >= 0"),
+    ({"newton_pair": "maybe"}, "newton_pair maybe: use on or off"),
 ])
 def test_bad_parameters(tmp_path, var, expect):
     proc = subprocess.run(lmp_cmd(tmp_path / "bad", screen=True, **var), capture_output=True,
