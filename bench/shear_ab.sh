@@ -7,9 +7,10 @@
 #   bash bench/shear_ab.sh RESTART NSTEPS ROUNDS "NAME|NP|ARGS[|LMP]" ...
 # RESTART: a prep.restart or shear.restart.<K> of a run of the paper case.
 # Each variant: a name, the number of MPI ranks, extra lmp arguments
-# (-var settings, -sf omp -pk omp 2, ...) and optionally its own lmp
+# (-var settings, -sf omp -pk omp 2, ...), optionally its own lmp
 # binary (e.g. one frozen by bench/timed_case.sh init, whose liblammps.so.0
-# sits beside it).  Example:
+# sits beside it; empty for the default) and optionally extra mpirun
+# arguments (e.g. --bind-to core).  Example:
 #   bash bench/shear_ab.sh runs/base/shear.restart.1750000 20000 3 \
 #     "base|1|" "check100|1|-var check_every 100"
 # Environment: LMP (default build/lmp), INPUTS (default inputs/), OUT
@@ -31,13 +32,14 @@ case "$(basename "$restart")" in
 esac
 for round in $(seq 1 "$rounds"); do
   for variant in "$@"; do
-    IFS='|' read -r name np args vlmp <<< "$variant"
+    IFS='|' read -r name np args vlmp mpiargs <<< "$variant"
     dir=$out/$name
     rm -rf "$dir" && mkdir -p "$dir/snapshots"
     if [ "$resume" = yes ]; then ln -s "$restart" "$dir/shear.restart.$k"; else ln -s "$restart" "$dir/prep.restart"; fi
     bin=${vlmp:-$lmp}
     cmd=("$bin")
-    [ "$np" -gt 1 ] && cmd=(mpirun --allow-run-as-root --oversubscribe -np "$np"
+    # shellcheck disable=SC2206
+    [ "$np" -gt 1 ] && cmd=(mpirun --allow-run-as-root --oversubscribe -np "$np" ${mpiargs:-}
                             -x LD_LIBRARY_PATH -x OMP_NUM_THREADS "$bin")
     # shellcheck disable=SC2086
     LD_LIBRARY_PATH=$(dirname "$(realpath "$bin")")${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH} \
