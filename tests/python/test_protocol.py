@@ -503,3 +503,31 @@ def test_bad_parameters(tmp_path, var, expect):
     text = proc.stdout + proc.stderr + tail(tmp_path / "bad" / "log.prep.lammps")
     assert proc.returncode != 0
     assert expect in text
+
+
+def test_outdir_with_whitespace(tmp_path):
+    """A space would split outdir into two words in the decks' file names and
+    shell commands (mkdir would make two directories): an error first."""
+    for name in ("two words", "tab\there"):
+        outdir = tmp_path / name
+        proc = subprocess.run(lmp_cmd(outdir, screen=True, preset="quick"), capture_output=True,
+                              text=True, timeout=120, cwd=tmp_path)
+        assert proc.returncode != 0
+        assert f"outdir {outdir} contains whitespace" in proc.stdout + proc.stderr
+        # nothing was made: neither the directory nor pieces of its name
+        assert sorted(p.name for p in tmp_path.iterdir()) == []
+
+
+def test_sample_too_small(tmp_path):
+    """20 spheres compress into a cell narrower than 2 d_max (two spheres
+    would touch through two periodic images at once): the preparation stops
+    with the sizes, before prep.restart; 30 spheres make a cell wide enough."""
+    proc = subprocess.run(lmp_cmd(tmp_path / "n20", screen=True, preset="quick", N=20),
+                          capture_output=True, text=True, timeout=120)
+    text = proc.stdout + proc.stderr
+    assert proc.returncode != 0
+    assert "the sample of N = 20 spheres is too small" in text
+    assert "each must be >= 2 d_max = 0.004" in text
+    assert not (tmp_path / "n20" / "prep.restart").exists()
+    run(tmp_path / "n30", preset="quick", N=30, stage="prep", timeout=120)
+    assert (tmp_path / "n30" / "prep.restart").exists()
