@@ -429,7 +429,7 @@ TEST_F(Packings, SingleReproducesForcesAndTorques)
   read(lmp, poly);
   lmp.cmds({"pair_style granular/grflow", "pair_coeff * * 1.0e6 1.15"});
   drive(lmp);
-  lmp.cmds({"run 1000", "compute pl all pair/local dist dx dy dz p1 p2 p3 p5 p6 p7 p9 p11",
+  lmp.cmds({"run 1000", "compute pl all pair/local dist p1 p2 p3 p5 p6 p7 p9 p11",
             "compute ids all property/local patom1 patom2", "run 0"});
   const int n = lmp.natoms();
   const int nrows =
@@ -443,6 +443,18 @@ TEST_F(Packings, SingleReproducesForcesAndTorques)
   const auto tag = (int *) lammps_extract_atom(lmp.handle, "id");
   std::vector<double> rad(n + 1);
   for (int k = 0; k < n; k++) rad[tag[k]] = radius[k];
+  // the branch vector x_i - x_j from the positions (minimum image in the
+  // periodic, orthogonal box): compute pair/local's dx, dy, dz point from
+  // the higher to the lower atom ID in LAMMPS 4Feb2025 and are x_i - x_j of
+  // the listed pair in later versions
+  const auto x = lmp.gather3("x");
+  double boxlo[3], boxhi[3], xy, yz, xz;
+  int periodic[3], box_change;
+  lammps_extract_box(lmp.handle, boxlo, boxhi, &xy, &yz, &xz, periodic, &box_change);
+  ASSERT_EQ(xy, 0.0);
+  ASSERT_EQ(yz, 0.0);
+  ASSERT_EQ(xz, 0.0);
+  double worst_r = 0.0;
 
   std::vector<double> f(3 * n, 0.0), t(3 * n, 0.0);
   int contacts = 0, sliding = 0, rolling = 0, twisting = 0;
@@ -451,9 +463,15 @@ TEST_F(Packings, SingleReproducesForcesAndTorques)
     // single() is evaluated for (i = patom1, j = patom2); pair/local turns
     // dx,dy,dz to point from the higher to the lower atom ID: undo that
     const int i = (int) ids[row][0], j = (int) ids[row][1];
-    const double sgn = i > j ? -1.0 : 1.0;
-    const double r = q[0], del[3] = {sgn * q[1], sgn * q[2], sgn * q[3]};
-    const double fn = q[11], ft[3] = {q[4], q[5], q[6]}, fr[3] = {q[7], q[8], q[9]}, fo = q[10];
+    double del[3];
+    for (int k = 0; k < 3; k++) {
+      del[k] = x[3 * (i - 1) + k] - x[3 * (j - 1) + k];
+      const double len = boxhi[k] - boxlo[k];
+      if (periodic[k]) del[k] -= len * std::round(del[k] / len);
+    }
+    const double r = q[0];
+    worst_r = std::max(worst_r, std::fabs(std::sqrt(dot3(del, del)) - r) / r);
+    const double fn = q[8], ft[3] = {q[1], q[2], q[3]}, fr[3] = {q[4], q[5], q[6]}, fo = q[7];
     if (r >= rad[i] + rad[j]) continue;
     contacts++;
     sliding += ft[0] != 0.0;
@@ -473,6 +491,8 @@ TEST_F(Packings, SingleReproducesForcesAndTorques)
       t[3 * (j - 1) + k] += -(rad[j] - 0.5 * delta) * nxft[k] - tc;
     }
   }
+  // the same pairs as pair/local's: distances to round-off of the positions
+  EXPECT_LT(measured("|x_i - x_j| vs pair/local dist", worst_r), 1.0e-12);
   EXPECT_GT(sliding, contacts / 2);
   EXPECT_GT(rolling, contacts / 2);
   EXPECT_GT(twisting, contacts / 2);
