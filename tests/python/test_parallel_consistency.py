@@ -65,12 +65,15 @@ def test_same_trajectory(packing, nprocs, newton, sort, threads):
     dx, dw = rel_diff(x, x_ref), rel_diff(w, w_ref)
     print(f"[ measured ] np={nprocs} newton={newton} sort={sort} omp threads={threads}: "
           f"x {dx:.3e}  omega {dw:.3e}")
-    # round-off from summation order grows over the run (measured 1e-10 in
-    # x, 2e-8 in omega), far below what a wrongly transferred spring history
-    # gives (measured 6e-3 in x, 0.4 in omega, before transfer_history was
-    # switched on)
-    assert dx < 1e-8
-    assert dw < 1e-6
+    # Two scales to tell apart.  Round-off from another summation order grows
+    # chaotically over the run, so its size depends on the compiler and the
+    # LAMMPS version: up to 6.7e-10 in x and 1.1e-6 in omega (LAMMPS
+    # 4Jul2026, np=2 with 2 threads; 2e-8 in omega with 4Feb2025).  A wrongly
+    # transferred spring history gives 6e-3 in x and 0.4 in omega (measured
+    # before transfer_history was switched on).  Each threshold sits about
+    # halfway between the two on a log scale, 2-4 decades from both.
+    assert dx < 1e-6
+    assert dw < 1e-4
 
 
 def crossing_torque(tmp_path, newton, pairstyle, paircoeff):
