@@ -150,7 +150,7 @@ FixGRFLOWWall::~FixGRFLOWWall()
 
 int FixGRFLOWWall::setmask()
 {
-  return INITIAL_INTEGRATE | POST_FORCE;
+  return INITIAL_INTEGRATE | PRE_EXCHANGE | POST_FORCE;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -166,6 +166,13 @@ void FixGRFLOWWall::init()
   near_allowed = (neighbor->every == 1) && (neighbor->delay == 0) && neighbor->dist_check &&
       !neighbor->build_once && (neighbor->skin > 0.0) && modify->get_fix_by_style("^adapt").empty();
   near_ncalls = -1;
+
+  // minimize calls no fix's post_force(), only min_post_force()
+  if (update->whichflag == 2 && comm->me == 0)
+    error->warning(FLERR,
+                   "Fix grflow/wall {}: the walls do not act during a minimization; atoms can "
+                   "cross them (and be lost where a wall sits on a box face)",
+                   id);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -189,6 +196,36 @@ void FixGRFLOWWall::initial_integrate(int /*vflag*/)
   }
   if (walls[LO].active && walls[HI].active && walls[HI].z <= walls[LO].z)
     error->all(FLERR, "Fix grflow/wall {}: the top wall has reached the bottom wall", id);
+}
+
+/* ----------------------------------------------------------------------
+   on the steps with a neighbor list build, before atoms move between ranks:
+   an atom of the group that crossed a wall is an error here, not an atom
+   lost by Comm::exchange() where the wall sits on a fixed box face (between
+   builds post_force() finds it, the atom still being owned)
+------------------------------------------------------------------------- */
+
+void FixGRFLOWWall::pre_exchange()
+{
+  double **x = atom->x;
+  const int *mask = atom->mask;
+  const tagint *tag = atom->tag;
+  const int nlocal = atom->nlocal;
+  for (int iw = 0; iw < NWALL; iw++) {
+    const Wall &w = walls[iw];
+    if (!w.active) continue;
+    const double sign = normal_sign(iw);
+    for (int i = 0; i < nlocal; i++)
+      if ((mask[i] & groupbit) && sign * (x[i][2] - w.z) <= 0.0) crossed(iw, tag[i], x[i][2]);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixGRFLOWWall::crossed(int iw, tagint itag, double z)
+{
+  error->one(FLERR, "Fix grflow/wall {}: atom {} crossed the {} wall (z = {}, wall at {})", id,
+             itag, iw == LO ? "zlo" : "zhi", z, walls[iw].z);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -249,9 +286,7 @@ void FixGRFLOWWall::post_force(int vflag)
       ci[4 * iw] = 0.0;
       const double sign = normal_sign(iw);
       const double gap = sign * (z - w.z);    // centre to wall, along n
-      if (gap <= 0.0)
-        error->one(FLERR, "Fix grflow/wall {}: atom {} crossed the {} wall (z = {}, wall at {})",
-                   id, tag[i], iw == LO ? "zlo" : "zhi", z, w.z);
+      if (gap <= 0.0) crossed(iw, tag[i], z);
       if (gap >= rad) {
         if (was_touching)
           for (int k = 0; k < HIST_SIZE; k++) hist[k] = 0.0;

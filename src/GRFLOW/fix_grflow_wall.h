@@ -33,6 +33,7 @@ class FixGRFLOWWall : public Fix {
   void init() override;
   void setup(int) override;
   void initial_integrate(int) override;
+  void pre_exchange() override;
   void post_force(int) override;
   void reset_dt() override;
   double compute_vector(int) override;
@@ -103,6 +104,7 @@ class FixGRFLOWWall : public Fix {
   int near_nlocal;         // atom->nlocal then
   double near_z[NWALL];    // wall positions then
   bool update_near();
+  [[noreturn]] void crossed(int, tagint, double);
 
   void mark_unknown(int);
 };

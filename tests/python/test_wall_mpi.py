@@ -148,3 +148,37 @@ def test_crossing_is_an_error_not_a_hang(tmp_path):
     proc = run_lmp(["-in", str(deck)], tmp_path, 2, check=False, timeout=120)
     assert proc.returncode != 0
     assert "Fix grflow/wall w: atom 1 crossed the zlo wall" in proc.stdout + proc.stderr
+
+
+def test_crossing_at_the_box_face_is_the_walls_error(tmp_path):
+    """With the walls on the fixed box faces (as the decks put them) the
+    crossing atom leaves the box: the wall reports it before LAMMPS's
+    exchange would drop it as a lost atom.  With pair and skin the crossing
+    comes on a step with a neighbor list build: at 1000 m/s the atom moves a
+    skin (1e-4 m) per step, so every step has one."""
+    deck = tmp_path / "crossing_face.lmp"
+    deck.write_text(CROSSING.replace("1 1 2", "1 1 *").replace("vz -100.0", "vz -1000.0").replace("zlo 0.001 zhi 0.009", "zlo 0.0 zhi 0.01").replace(
+        "fix             nve", "pair_style      granular/grflow\n"
+        "pair_coeff      * * 1.0e6 1.15\n"
+        "neighbor        1.0e-4 bin\n"
+        "neigh_modify    delay 0 every 1 check yes\n"
+        "comm_modify     vel yes\n"
+        "fix             nve"))
+    for nprocs in (1, 2):
+        proc = run_lmp(["-in", str(deck)], tmp_path, nprocs, check=False, timeout=120)
+        text = proc.stdout + proc.stderr
+        assert proc.returncode != 0
+        assert "Fix grflow/wall w: atom 1 crossed the zlo wall" in text
+        assert "Lost atoms" not in text
+
+
+def test_minimize_warns_that_walls_do_not_act(tmp_path):
+    deck = tmp_path / "minimize.lmp"
+    deck.write_text(CROSSING.replace("1 1 2", "1 1 *").replace("run             100000",
+                                                               "minimize 0 0 10 100\nrun 0"))
+    proc = run_lmp(["-in", str(deck)], tmp_path, 1, check=False, timeout=120)
+    text = proc.stdout + proc.stderr
+    assert ("Fix grflow/wall w: the walls do not act during a minimization; atoms can "
+            "cross them") in text
+    # a run after it does not repeat the warning
+    assert text.count("walls do not act") == 1
