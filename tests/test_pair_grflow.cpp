@@ -31,7 +31,12 @@
 #include "pair.h"
 
 #include <array>
+#include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <limits>
 
 using namespace grflow_test;
 using namespace LAMMPS_NS::GRFLOW;
@@ -660,12 +665,44 @@ TEST(PairGRFLOWErrors, NeedsSpheresAndGhostVelocities)
 
   // rRESPA, as the doc page says
   setup = sphere_box;
-  setup.insert(setup.end(), {"pair_coeff * * 1.0e6 1.15", "comm_modify vel yes",
-                             "run_style respa 2 2"});
+  setup.insert(setup.end(),
+               {"pair_coeff * * 1.0e6 1.15", "comm_modify vel yes", "run_style respa 2 2"});
   msg = error_after(setup, "run 0");
   EXPECT_NE(msg.find("Pair style granular/grflow does not support run_style respa"),
             std::string::npos)
       << msg;
+}
+
+TEST(PairGRFLOWErrors, DamagedCoefficientsInRestartFile)
+{
+  // a restart file whose k_n is NaN or infinite (one byte pattern replaced:
+  // a value used once in the file) is refused when the run starts, as
+  // pair_coeff and fix adapt refuse the same value
+  const std::string file = workfile("pair_damage.restart");
+  const double kn = 1234567.0;
+  {
+    Lammps lmp;
+    lmp.cmds(sphere_box);
+    lmp.cmds({"pair_coeff * * " + fmt_double(kn) + " 1.15", "comm_modify vel yes",
+              "write_restart " + file});
+  }
+  std::ifstream in(file, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string pattern((const char *) &kn, sizeof(double));
+  const size_t at = bytes.find(pattern);
+  ASSERT_NE(at, std::string::npos);
+  ASSERT_EQ(bytes.find(pattern, at + 1), std::string::npos);
+  for (const double bad :
+       {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    std::string b = bytes;
+    memcpy(&b[at], &bad, sizeof(double));
+    const std::string out = workfile("pair_damaged.restart");
+    std::ofstream(out, std::ios::binary) << b;
+    const std::string msg = error_after({"read_restart " + out, "comm_modify vel yes"}, "run 0");
+    const std::string want =
+        std::string("kn must be finite, got ") + (std::isnan(bad) ? "nan" : "inf");
+    EXPECT_NE(msg.find(want), std::string::npos) << msg;
+  }
 }
 
 }    // namespace

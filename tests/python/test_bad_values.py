@@ -97,16 +97,18 @@ run 1
     assert "atom 2 has diameter" in text and "finite diameter > 0" in text, text[-2000:]
 
 
-@pytest.mark.parametrize("zlimits,expect", [
-    ("v_lo v_inf", "variable inf is inf, not a finite number"),
-    ("v_hi v_lo", "must have zlo < zhi"),
+@pytest.mark.parametrize("args,expect", [
+    ("zlimits v_lo v_inf", "variable inf is inf, not a finite number"),
+    ("zlimits v_hi v_lo", "must have zlo < zhi"),
+    # the volume of a region sub-volume, by the same road
+    ("region box volume v_inf", "volume: variable inf is inf, not a finite number"),
 ])
-def test_network_zlimits_must_be_finite(tmp_path, zlimits, expect):
+def test_network_zlimits_and_volume_must_be_finite(tmp_path, args, expect):
     # an equal-style variable can be infinite (1e300*1e300); LAMMPS refuses
     # to use it in another formula, so a NaN cannot be made this way (the
     # same check catches one)
     text = error_of(tmp_path, "variable lo equal 0.0\nvariable hi equal 0.01\n"
                               "variable inf equal 1.0e300*1.0e300\n"
-                              f"compute net all grflow/network zlimits {zlimits}\n"
+                              f"compute net all grflow/network {args}\n"
                               "thermo_style custom step c_net[1]\nrun 0\n")
     assert expect in text, text[-2000:]
