@@ -18,6 +18,7 @@
 #ifndef GRFLOW_TEST_LAMMPS_FIXTURE_H
 #define GRFLOW_TEST_LAMMPS_FIXTURE_H
 
+#include "grflow_restart.h"
 #include "library.h"
 
 #include <gtest/gtest.h>
@@ -25,8 +26,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <unistd.h>
+#include <cstring>
+#include <fstream>
+#include <iterator>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace grflow_test {
@@ -36,8 +40,8 @@ class Lammps {
  public:
   Lammps()
   {
-    const char *args[] = {"grflow_test", "-log", "none", "-echo", "none", "-screen", "none",
-                          "-nocite"};
+    const char *args[] = {"grflow_test", "-log",    "none", "-echo",
+                          "none",        "-screen", "none", "-nocite"};
     handle = lammps_open_no_mpi(8, (char **) args, nullptr);
   }
   ~Lammps() { lammps_close(handle); }
@@ -172,7 +176,11 @@ template <class Body> std::vector<double> body_field(const std::vector<Body> &bo
 {
   std::vector<double> out;
   for (const auto &p : bodies) {
-    const double *q = which == 0 ? p.x : which == 1 ? p.v : which == 2 ? p.w : which == 3 ? p.f : p.t;
+    const double *q = which == 0 ? p.x
+        : which == 1             ? p.v
+        : which == 2             ? p.w
+        : which == 3             ? p.f
+                                 : p.t;
     out.insert(out.end(), q, q + 3);
   }
   return out;
@@ -183,6 +191,47 @@ template <class Body> std::vector<double> body_field(const std::vector<Body> &bo
 inline std::string workfile(const std::string &name)
 {
   return std::string(GRFLOW_TEST_WORKDIR) + "/" + std::to_string((long) getpid()) + "_" + name;
+}
+
+// The GRFLOW restart block that holds count values (the wall fix 14, the
+// compress fix 13, the shear fix 8) in the bytes of a restart file: its
+// offset (at its tag; then version, count, values), npos if there is none
+// or more than one.
+inline size_t grflow_block(const std::string &bytes, double count)
+{
+  const double tag = LAMMPS_NS::GRFLOW::RESTART_TAG;
+  const std::string tagbytes((const char *) &tag, sizeof(double));
+  size_t at = std::string::npos;
+  for (size_t pos = bytes.find(tagbytes); pos != std::string::npos;
+       pos = bytes.find(tagbytes, pos + 1)) {
+    double n;
+    memcpy(&n, &bytes[pos + 2 * sizeof(double)], sizeof(double));
+    if (n != count) continue;
+    if (at != std::string::npos) return std::string::npos;
+    at = pos;
+  }
+  return at;
+}
+
+inline std::string file_bytes(const std::string &file)
+{
+  std::ifstream in(file, std::ios::binary);
+  return {(std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()};
+}
+
+// a copy of a restart file (named name in the work directory) with value k
+// of the GRFLOW block of count values set to x (k = 0: tag, 1: version,
+// 2: count, 3...: the values); "" if the file has no such single block
+inline std::string damaged_restart(const std::string &file, double count, int k, double x,
+                                   const std::string &name)
+{
+  std::string b = file_bytes(file);
+  const size_t at = grflow_block(b, count);
+  if (at == std::string::npos) return "";
+  memcpy(&b[at + k * sizeof(double)], &x, sizeof(double));
+  const std::string out = workfile(name);
+  std::ofstream(out, std::ios::binary) << b;
+  return out;
 }
 
 // path of a deck or data file known to the build
@@ -199,8 +248,9 @@ inline std::string make_packing(const std::string &tag, int nside, double dmin, 
   Lammps lmp;
   lmp.cmds({"units si", "atom_style sphere", "variable nside equal " + std::to_string(nside),
             "variable seed equal 4321", "variable dmin equal " + fmt_double(dmin),
-            "variable dmax equal " + fmt_double(dmax), "variable phi equal " + fmt_double(phi), "variable ncomp equal 40000",
-            "variable out string " + out, "include " + deck("dense_packing.lmp")});
+            "variable dmax equal " + fmt_double(dmax), "variable phi equal " + fmt_double(phi),
+            "variable ncomp equal 40000", "variable out string " + out,
+            "include " + deck("dense_packing.lmp")});
   return out;
 }
 

@@ -32,6 +32,8 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <limits>
+#include <utility>
 
 using namespace grflow_test;
 
@@ -39,8 +41,26 @@ namespace {
 
 // documented vector layout of fix grflow/compress, 0-based
 enum {
-  CONVERGED, SXX, SYY, SZZ, ERRMAX, KE, EEL, RATIO, RATE_X, RATE_Y, RATE_Z, VOLUME, VOID, LX, LY,
-  HEIGHT, FACTOR_X, FACTOR_Y, FACTOR_Z, NCOMP
+  CONVERGED,
+  SXX,
+  SYY,
+  SZZ,
+  ERRMAX,
+  KE,
+  EEL,
+  RATIO,
+  RATE_X,
+  RATE_Y,
+  RATE_Z,
+  VOLUME,
+  VOID,
+  LX,
+  LY,
+  HEIGHT,
+  FACTOR_X,
+  FACTOR_Y,
+  FACTOR_Z,
+  NCOMP
 };
 enum { LO_Z = 3, HI_Z = 9, NWALL = 12 };    // fix grflow/wall
 
@@ -58,7 +78,10 @@ void cell(Lammps &lmp)
   lmp.cmd("include " + deck("compress_cell.lmp"));
 }
 
-std::vector<double> comp(Lammps &lmp) { return lmp.fix_vector("cmp", NCOMP); }
+std::vector<double> comp(Lammps &lmp)
+{
+  return lmp.fix_vector("cmp", NCOMP);
+}
 
 // the cell of a restart file, with the commands a restart does not keep
 // (the wall fix and fix cmp are re-specified and take their state from it)
@@ -68,8 +91,8 @@ void resume_cell(Lammps &lmp, const std::string &file, const std::string &extra 
             "neigh_modify delay 0 every 1 check yes",
             "fix w all grflow/wall 1.0e6 1.15 mut 0.1 zlo 0 zhi 1", "variable zlo equal f_w[4]",
             "variable zhi equal f_w[10]",
-            "compute net all grflow/network zlimits v_zlo v_zhi slab 1.0",
-            "fix nve all nve/sphere", compress_cmd(extra)});
+            "compute net all grflow/network zlimits v_zlo v_zhi slab 1.0", "fix nve all nve/sphere",
+            compress_cmd(extra)});
 }
 
 }    // namespace
@@ -142,8 +165,8 @@ TEST(Compress, ReachesAndHoldsTarget)
   for (int k = 0; k < 60; k++) {
     lmp.cmd("run 5000 post no");
     const auto c = comp(lmp);
-    const auto net = (double *) lammps_extract_compute(lmp.handle, "net", LMP_STYLE_GLOBAL,
-                                                       LMP_TYPE_VECTOR);
+    const auto net =
+        (double *) lammps_extract_compute(lmp.handle, "net", LMP_STYLE_GLOBAL, LMP_TYPE_VECTOR);
     ASSERT_NE(net, nullptr);
     // the stresses are the compute's (this is a servo step)
     EXPECT_EQ(c[SXX], net[0]);
@@ -294,8 +317,8 @@ TEST(Compress, RestartContinues)
     // between servo steps the rates are kept, and the outputs re-measured
     lmp.cmd("run 0 post no");
     const auto c0 = comp(lmp);
-    const auto *net = (double *) lammps_extract_compute(lmp.handle, "net", LMP_STYLE_GLOBAL,
-                                                        LMP_TYPE_VECTOR);
+    const auto *net =
+        (double *) lammps_extract_compute(lmp.handle, "net", LMP_STYLE_GLOBAL, LMP_TYPE_VECTOR);
     ASSERT_NE(net, nullptr);
     double errmax = 0.0;
     for (int a = 0; a < 3; a++) {
@@ -343,17 +366,8 @@ TEST(Compress, ReadsRestartWithoutDampingState)
   }
   for (int k : {FACTOR_X, FACTOR_Y, FACTOR_Z}) ASSERT_EQ(ref_start[k], 1.0) << "entry " << k;
 
-  std::ifstream in(file, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const double tag = LAMMPS_NS::GRFLOW::RESTART_TAG;
-  const std::string tagbytes((const char *) &tag, sizeof(double));
-  size_t at = std::string::npos;
-  for (size_t pos = bytes.find(tagbytes); pos != std::string::npos;
-       pos = bytes.find(tagbytes, pos + 1)) {
-    double count;
-    memcpy(&count, &bytes[pos + 2 * sizeof(double)], sizeof(double));
-    if (count == 13.0) at = pos;    // the compress fix's 13 values (the wall's are 14)
-  }
+  const std::string bytes = file_bytes(file);
+  const size_t at = grflow_block(bytes, 13.0);    // the compress fix's 13 values
   ASSERT_NE(at, std::string::npos) << "no fix grflow/compress block in " << file;
   int size;
   memcpy(&size, &bytes[at - sizeof(int)], sizeof(int));
@@ -398,6 +412,46 @@ TEST(Compress, ReadsRestartWithoutDampingState)
            fabs(got[SZZ] / ref[SZZ] - 1.0));
 }
 
+TEST(Compress, DamagedRestartData)
+{
+  // the fix's block of a restart file goes through the checks of
+  // grflow_restart.h (tested in full for fix grflow/wall): a version from
+  // the future and a NaN value are errors naming this fix
+  const std::string file = workfile("compress_damage.restart");
+  {
+    Lammps lmp;
+    cell(lmp);
+    lmp.cmds({compress_cmd(), "run 100 post no", "write_restart " + file});
+  }
+  const std::string nan_file = damaged_restart(
+      file, 13.0, 3, std::numeric_limits<double>::quiet_NaN(), "compress_nan.restart");
+  const std::string v99_file = damaged_restart(file, 13.0, 1, 99.0, "compress_v99.restart");
+  ASSERT_NE(nan_file, "");
+  for (const auto &[damaged, expect] :
+       {std::make_pair(file, std::string()),
+        std::make_pair(v99_file,
+                       std::string("Fix grflow/compress cmp: restart data of format "
+                                   "version 99")),
+        std::make_pair(nan_file,
+                       std::string("Fix grflow/compress cmp: restart value 1 of 13 is "
+                                   "nan"))}) {
+    Lammps lmp;
+    std::string msg;
+    for (const auto &line :
+         {"read_restart " + damaged, std::string("comm_modify vel yes"),
+          std::string("fix w all grflow/wall 1.0e6 1.15 mut 0.1 zlo 0 zhi 1"),
+          std::string("variable zlo equal f_w[4]"), std::string("variable zhi equal f_w[10]"),
+          std::string("compute net all grflow/network zlimits v_zlo v_zhi"), compress_cmd()}) {
+      msg = lmp.error_of(line);
+      if (!msg.empty()) break;
+    }
+    if (expect.empty())
+      EXPECT_EQ(msg, "");
+    else
+      EXPECT_NE(msg.find(expect), std::string::npos) << msg;
+  }
+}
+
 TEST(Compress, ElasticEnergyFromAVariable)
 {
   // for pair styles without an energy (stock pair granular) the elastic
@@ -409,8 +463,8 @@ TEST(Compress, ElasticEnergyFromAVariable)
             compress_cmd("elastic v_eel"), "run 170000 post no"});
   const auto c = comp(lmp);
   // sum f^2/(2 kn) over the normal forces, from single() (pair granular/grflow)
-  auto *fsq = (double *) lammps_extract_compute(lmp.handle, "fsq", LMP_STYLE_GLOBAL,
-                                                LMP_TYPE_SCALAR);
+  auto *fsq =
+      (double *) lammps_extract_compute(lmp.handle, "fsq", LMP_STYLE_GLOBAL, LMP_TYPE_SCALAR);
   ASSERT_NE(fsq, nullptr);
   const double sumsq = *fsq;
   EXPECT_GT(c[EEL], 0.0);
@@ -486,8 +540,10 @@ TEST(Compress, BadInput)
       {"fix c all grflow/compress w net 1e5 10 ke_ratio 0", "ke_ratio must be > 0"},
       {"fix c all grflow/compress w net 1e5 10 every 0", "every must be >= 1"},
       {"fix c all grflow/compress w net 1e5 10 bogus 1", "Unknown fix grflow/compress keyword"},
-      {"fix c all grflow/compress w net 1e5 10 bogus", "Unknown fix grflow/compress keyword: bogus"},
-      {"fix c all grflow/compress w net 1e5 10 bogus x", "Unknown fix grflow/compress keyword: bogus"},
+      {"fix c all grflow/compress w net 1e5 10 bogus",
+       "Unknown fix grflow/compress keyword: bogus"},
+      {"fix c all grflow/compress w net 1e5 10 bogus x",
+       "Unknown fix grflow/compress keyword: bogus"},
       {"fix c all grflow/compress w net 1e5 10 every", "fix grflow/compress every"},
       {"fix c all grflow/compress w net 1e5 ten", "Expected floating point"},
       {"fix c all grflow/compress w net 1e5 10 elastic 3", "elastic takes an equal-style variable"},
@@ -501,25 +557,34 @@ TEST(Compress, BadInput)
     std::vector<std::string> extra;
     const char *line, *expect;
   } init_cases[] = {
-      {{}, "fix c all grflow/compress nowall net 1e5 10",
+      {{},
+       "fix c all grflow/compress nowall net 1e5 10",
        "Fix grflow/compress: fix nowall does not exist"},
-      {{}, "fix c all grflow/compress nve net 1e5 10",
+      {{},
+       "fix c all grflow/compress nve net 1e5 10",
        "Fix grflow/compress: fix nve is not a fix grflow/wall"},
-      {{}, "fix c all grflow/compress w nonet 1e5 10",
+      {{},
+       "fix c all grflow/compress w nonet 1e5 10",
        "Fix grflow/compress: compute nonet does not exist"},
-      {{"compute ke all ke"}, "fix c all grflow/compress w ke 1e5 10",
+      {{"compute ke all ke"},
+       "fix c all grflow/compress w ke 1e5 10",
        "Fix grflow/compress: compute ke is not a compute grflow/network"},
       {{"unfix w", "fix w all grflow/wall 1.0e6 1.15 zlo 0"},
-       "fix c all grflow/compress w net 1e5 10", "must have both walls"},
-      {{}, "fix c all grflow/compress w net 1e5 10 elastic v_nothere",
+       "fix c all grflow/compress w net 1e5 10",
+       "must have both walls"},
+      {{},
+       "fix c all grflow/compress w net 1e5 10 elastic v_nothere",
        "Fix grflow/compress: variable nothere does not exist"},
-      {{"variable a atom x"}, "fix c all grflow/compress w net 1e5 10 elastic v_a",
+      {{"variable a atom x"},
+       "fix c all grflow/compress w net 1e5 10 elastic v_a",
        "Fix grflow/compress: variable a is not equal-style"},
-      {{"fix def all deform 1 x scale 0.99"}, "fix c all grflow/compress w net 1e5 10",
+      {{"fix def all deform 1 x scale 0.99"},
+       "fix c all grflow/compress w net 1e5 10",
        "Must not have multiple fixes change box parameter x"},
       // its setup() reads the compute, which reads the wall's contacts of
       // the step: the wall fix must be set up first
-      {{"unfix w"}, "fix c all grflow/compress w net 1e5 10",
+      {{"unfix w"},
+       "fix c all grflow/compress w net 1e5 10",
        "fix grflow/wall w has no contacts for step 0"},
   };
   for (const auto &c : init_cases) {

@@ -34,7 +34,9 @@
 #include "lammps_fixture.h"
 
 #include <fstream>
+#include <limits>
 #include <sstream>
+#include <utility>
 
 using namespace grflow_test;
 
@@ -42,8 +44,21 @@ namespace {
 
 // documented vector layout of fix grflow/shear, 0-based
 enum {
-  DIRECTION, REVERSALS, XWALL, GAMMA, TAU, PRESS, RU, P0, STEP_IL, TIME_IL, CYCLES_IL, CYCLES,
-  DONE, EVENT, NSHEAR
+  DIRECTION,
+  REVERSALS,
+  XWALL,
+  GAMMA,
+  TAU,
+  PRESS,
+  RU,
+  P0,
+  STEP_IL,
+  TIME_IL,
+  CYCLES_IL,
+  CYCLES,
+  DONE,
+  EVENT,
+  NSHEAR
 };
 // fix grflow/wall: per wall Fx Fy Fz z dx dy
 enum { LO_Z = 3, HI_Z = 9, HI_DX = 10, NWALL = 12 };
@@ -58,8 +73,14 @@ std::vector<double> fvec(Lammps &lmp, const char *id, int n)
   return lmp.fix_vector(id, n);
 }
 
-std::vector<double> shear(Lammps &lmp) { return fvec(lmp, "sh", NSHEAR); }
-std::vector<double> wallv(Lammps &lmp) { return fvec(lmp, "w", NWALL); }
+std::vector<double> shear(Lammps &lmp)
+{
+  return fvec(lmp, "sh", NSHEAR);
+}
+std::vector<double> wallv(Lammps &lmp)
+{
+  return fvec(lmp, "w", NWALL);
+}
 
 std::vector<double> cvec(Lammps &lmp, const char *id)
 {
@@ -71,7 +92,10 @@ std::vector<double> cvec(Lammps &lmp, const char *id)
   return std::vector<double>(v, v + 26);
 }
 
-long step(Lammps &lmp) { return (long) lmp.thermo("step"); }
+long step(Lammps &lmp)
+{
+  return (long) lmp.thermo("step");
+}
 
 std::string join(const std::vector<long> &v)
 {
@@ -282,9 +306,8 @@ TEST_F(Shear, GluedLayerMovesWithTheWall)
   const double zcut = wallv(lmp)[HI_Z] - 1.2e-3;
   const std::string log = workfile("shear_glue.log");
   lmp.cmds({"variable top atom z>" + fmt_double(zcut), "group glue variable top",
-            "group mobile subtract all glue",
-            "fix nve mobile nve/sphere", shear_cmd(p, "glue glue"), "log " + log,
-            "run 0 post no", "log none"});
+            "group mobile subtract all glue", "fix nve mobile nve/sphere",
+            shear_cmd(p, "glue glue"), "log " + log, "run 0 post no", "log none"});
   // no false warning: the fix's group is all, its integrated atoms the glue
   EXPECT_EQ(slurp(log).find("time integrated more than once"), std::string::npos);
   {
@@ -455,7 +478,8 @@ TEST_F(Shear, RestartContinuesTheProtocol)
     lmp.cmd("run " + std::to_string(S - split));
     lmp.cmd("unfix rec");
     std::vector<long> rb;
-    for (long st : ra) if (st <= step(lmp) - (S - split)) rb.push_back(st);
+    for (long st : ra)
+      if (st <= step(lmp) - (S - split)) rb.push_back(st);
     for (long st : reversal_steps(f2, rev_mid)) rb.push_back(st);
     printf("[ measured ] split at %d: reversal steps A2%s, B%s\n", split, join(ra2).c_str(),
            join(rb).c_str());
@@ -482,6 +506,45 @@ TEST_F(Shear, RestartContinuesTheProtocol)
 // runs of 7 steps (most of them start between two checks) take the same
 // decisions as one run: the setup of a run reads tau but decides only at
 // multiples of every
+TEST_F(Shear, DamagedRestartData)
+{
+  // the fix's block of a restart file goes through the checks of
+  // grflow_restart.h (tested in full for fix grflow/wall): a version from
+  // the future and a NaN value are errors naming this fix
+  const std::string file = workfile("shear_damage.restart");
+  double p;
+  {
+    Lammps lmp;
+    p = read(lmp);
+    lmp.cmds({shear_cmd(p), "run 100 post no", "write_restart " + file});
+  }
+  const std::string nan_file =
+      damaged_restart(file, 8.0, 4, std::numeric_limits<double>::quiet_NaN(), "shear_nan.restart");
+  const std::string v99_file = damaged_restart(file, 8.0, 1, 99.0, "shear_v99.restart");
+  ASSERT_NE(nan_file, "");
+  for (const auto &[damaged, expect] :
+       {std::make_pair(file, std::string()),
+        std::make_pair(v99_file,
+                       std::string("Fix grflow/shear sh: restart data of format version 99")),
+        std::make_pair(nan_file,
+                       std::string("Fix grflow/shear sh: restart value 2 of 8 is nan"))}) {
+    Lammps lmp;
+    std::string msg;
+    for (const auto &line :
+         {"read_restart " + damaged, std::string("comm_modify vel yes"),
+          std::string("fix w all grflow/wall 1.0e6 1.15 zlo 0.0 zhi 8.0e-3"),
+          std::string("variable zlo equal f_w[4]"), std::string("variable zhi equal f_w[10]"),
+          std::string("compute net all grflow/network zlimits v_zlo v_zhi"), shear_cmd(p)}) {
+      msg = lmp.error_of(line);
+      if (!msg.empty()) break;
+    }
+    if (expect.empty())
+      EXPECT_EQ(msg, "");
+    else
+      EXPECT_NE(msg.find(expect), std::string::npos) << msg;
+  }
+}
+
 TEST_F(Shear, ShortRunsDecideOnlyEveryN)
 {
   const int S = 4200;
@@ -557,21 +620,28 @@ TEST_F(Shear, BadArguments)
     std::vector<std::string> extra;
     const char *line, *expect;
   } init_cases[] = {
-      {{}, "fix sh all grflow/shear nowall net 0.02 1000",
+      {{},
+       "fix sh all grflow/shear nowall net 0.02 1000",
        "Fix grflow/shear: fix nowall does not exist"},
-      {{"fix nve all nve/sphere"}, "fix sh all grflow/shear nve net 0.02 1000",
+      {{"fix nve all nve/sphere"},
+       "fix sh all grflow/shear nve net 0.02 1000",
        "Fix grflow/shear: fix nve is not a fix grflow/wall"},
-      {{"fix w1 all grflow/wall 1.0e6 1.15 zlo 0.0"}, "fix sh all grflow/shear w1 net 0.02 1000",
+      {{"fix w1 all grflow/wall 1.0e6 1.15 zlo 0.0"},
+       "fix sh all grflow/shear w1 net 0.02 1000",
        "Fix grflow/shear: fix w1 must have both walls, zlo and zhi"},
-      {{"fix w2 all grflow/wall 1.0e6 1.15 zhi 8.0e-3"}, "fix sh all grflow/shear w2 net 0.02 1000",
+      {{"fix w2 all grflow/wall 1.0e6 1.15 zhi 8.0e-3"},
+       "fix sh all grflow/shear w2 net 0.02 1000",
        "must have both walls"},
-      {{}, "fix sh all grflow/shear w nonet 0.02 1000",
+      {{},
+       "fix sh all grflow/shear w nonet 0.02 1000",
        "Fix grflow/shear: compute nonet does not exist"},
-      {{"compute ke all ke"}, "fix sh all grflow/shear w ke 0.02 1000",
+      {{"compute ke all ke"},
+       "fix sh all grflow/shear w ke 0.02 1000",
        "Fix grflow/shear: compute ke is not a compute grflow/network"},
       // its setup() reads the compute, which reads the wall's contacts of
       // the step: the wall fix must be set up first
-      {{"unfix w"}, "fix sh all grflow/shear w net 0.02 1000",
+      {{"unfix w"},
+       "fix sh all grflow/shear w net 0.02 1000",
        "fix grflow/wall w has no contacts for step"},
   };
   for (const auto &c : init_cases) {
@@ -586,8 +656,9 @@ TEST_F(Shear, BadArguments)
   // the glue group deleted after the fix was made
   {
     auto s = setup;
-    s.insert(s.end(), {"group top id 1", "fix sh all grflow/shear w net 0.02 1000 glue top",
-                       "group top delete"});
+    s.insert(
+        s.end(),
+        {"group top id 1", "fix sh all grflow/shear w net 0.02 1000 glue top", "group top delete"});
     const std::string msg = error_after(s, "run 0");
     EXPECT_NE(msg.find("Fix grflow/shear glue group top was deleted"), std::string::npos) << msg;
   }
@@ -597,9 +668,9 @@ TEST_F(Shear, BadArguments)
       {"units si", "atom_style sphere", "boundary p p f", "region box block 0 0.01 0 0.01 0 0.01",
        "create_box 1 box", "create_atoms 1 single 0.005 0.005 0.005",
        "set atom 1 diameter 1.0e-3 density 2650", "comm_modify vel yes",
-       "pair_style granular/grflow",
-       "pair_coeff * * 1.0e6 1.15", "fix w all grflow/wall 1.0e6 1.15 zlo 0.001 zhi 0.009",
-       "compute net all grflow/network", "fix sh all grflow/shear w net 0.02 1000"},
+       "pair_style granular/grflow", "pair_coeff * * 1.0e6 1.15",
+       "fix w all grflow/wall 1.0e6 1.15 zlo 0.001 zhi 0.009", "compute net all grflow/network",
+       "fix sh all grflow/shear w net 0.02 1000"},
       "run 0");
   EXPECT_NE(msg.find("Fix grflow/shear: the mean stress is 0 when shearing starts; it must be > "
                      "0 to define r_u"),

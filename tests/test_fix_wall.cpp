@@ -141,8 +141,8 @@ class WallIntegrator {
  public:
   WallIntegrator(std::vector<Ball> balls, const ContactCoeffs &c, double dt, bool full_arm,
                  bool stock_arm = false) :
-      b(std::move(balls)), c(c), dt(dt), full_arm(full_arm), stock_arm(stock_arm),
-      hist(b.size())
+      b(std::move(balls)),
+      c(c), dt(dt), full_arm(full_arm), stock_arm(stock_arm), hist(b.size())
   {
   }
 
@@ -352,7 +352,8 @@ TEST_P(OneSphere, PressedOnWall)
   };
   for (bool full : {false, true}) {
     if (full) {
-      lmp.cmds({"unfix w", "fix w all grflow/wall 1.0e6 1.15 zlo 1.0e-3 zhi 9.0e-3 velocity_arm full"});
+      lmp.cmds(
+          {"unfix w", "fix w all grflow/wall 1.0e6 1.15 zlo 1.0e-3 zhi 9.0e-3 velocity_arm full"});
     }
     for (const auto &m : motions) {
       const std::string what = std::string(side) + " wall, " + m.what + (full ? ", full arm" : "");
@@ -390,7 +391,9 @@ TEST_P(OneSphere, PressedOnWall)
 
   // the cases did what they were meant to: caps hit or not, f_n can vanish
   const double vw[3] = {0.0, 0.0, 0.0};
-  auto expect = [&](int k) { return fresh_contact(a, delta, sign, motions[k].v, motions[k].w, vw, false); };
+  auto expect = [&](int k) {
+    return fresh_contact(a, delta, sign, motions[k].v, motions[k].w, vw, false);
+  };
   EXPECT_EQ(expect(2).fn, 0.0);
   EXPECT_FALSE(expect(3).slip);
   EXPECT_TRUE(expect(4).slip);
@@ -414,10 +417,12 @@ TEST(FixWallOutput, MovingWallVelocityEntersTheContact)
     Lammps lmp;
     wall_box(lmp, 0.0, 0.01, 0.0, 0.01);
     const double vball[3] = {moving ? 0.0 : -u[0], moving ? 0.0 : -u[1], moving ? 0.0 : -u[2]};
-    add_ball(lmp, {{5.0e-3, 5.0e-3, a - 1.0e-5}, {vball[0], vball[1], vball[2]}, {10.0, 20.0, 30.0}, a});
+    add_ball(lmp,
+             {{5.0e-3, 5.0e-3, a - 1.0e-5}, {vball[0], vball[1], vball[2]}, {10.0, 20.0, 30.0}, a});
     lmp.cmd("fix w all grflow/wall 1.0e6 1.15 zlo 0.0");
-    if (moving) lmp.cmd("fix_modify w wall lo vel " + fmt_double(u[0]) + " " + fmt_double(u[1]) +
-                        " " + fmt_double(u[2]));
+    if (moving)
+      lmp.cmd("fix_modify w wall lo vel " + fmt_double(u[0]) + " " + fmt_double(u[1]) + " " +
+              fmt_double(u[2]));
     lmp.cmd("run 0");
     f[moving] = lmp.gather3("f");
     t[moving] = lmp.gather3("torque");
@@ -442,7 +447,9 @@ TEST(FixWallOutput, ForcesExtensivePositionsIntensive)
             "thermo_style custom step f_w[3] f_w[4] f_w[10] f_w[11] f_w[12]",
             "thermo_modify norm yes", "run 0"});
   const auto w = fvec(lmp, "w");
-  auto last = [&](int k) { return *(double *) lammps_last_thermo(lmp.handle, "data", k); };
+  auto last = [&](int k) {
+    return *(double *) lammps_last_thermo(lmp.handle, "data", k);
+  };
   EXPECT_DOUBLE_EQ(last(1), w[LO_FZ] / 2.0);
   EXPECT_EQ(last(2), 1.0e-3);
   EXPECT_EQ(last(3), 9.0e-3);
@@ -456,8 +463,22 @@ TEST(FixWallNetwork, WallContactsInComputeNetwork)
   // A between the walls (overlaps 1e-5 below, 2e-5 above), B on the lo wall
   // sliding slowly in x (overlap 3e-5), C floating.  The wall contacts count
   // for the particle inside: arm (a - delta/2) n (x) f, one contact, n n = e_z e_z
-  enum { SXX, SZZ = 2, SXZ = 4, PRESS = 6, TAU = 7, NP = 11, NFLOAT = 12, NCONTACT = 13, ZG = 14,
-         AC = 16, AXX = 18, AZZ = 20, VOLUME = 24, PC0 = 25 };
+  enum {
+    SXX,
+    SZZ = 2,
+    SXZ = 4,
+    PRESS = 6,
+    TAU = 7,
+    NP = 11,
+    NFLOAT = 12,
+    NCONTACT = 13,
+    ZG = 14,
+    AC = 16,
+    AXX = 18,
+    AZZ = 20,
+    VOLUME = 24,
+    PC0 = 25
+  };
   const double aA = 0.5e-3, aB = 0.3e-3, aC = 0.4e-3;
   const double dA1 = 1.0e-5, dA2 = 2.0e-5, dB = 3.0e-5, vB = 0.1;
   const double zA = aA - dA1, zhi = zA + aA - dA2;
@@ -576,10 +597,9 @@ TEST_P(SlidingOnWalls, FollowsKernel)
                        max_rel_diff(lmp.gather3(FIELDS[which]), ref.field(which))),
               1.0e-12);
   const auto w = fvec(lmp, "w");
-  const std::vector<double> want = {ref.wall[0].force[0], ref.wall[0].force[1], ref.wall[0].force[2],
-                                    ref.wall[0].z,        0.0,                  0.0,
-                                    ref.wall[1].force[0], ref.wall[1].force[1], ref.wall[1].force[2],
-                                    ref.wall[1].z,        0.0,                  0.0};
+  const std::vector<double> want = {
+      ref.wall[0].force[0], ref.wall[0].force[1], ref.wall[0].force[2], ref.wall[0].z, 0.0, 0.0,
+      ref.wall[1].force[0], ref.wall[1].force[1], ref.wall[1].force[2], ref.wall[1].z, 0.0, 0.0};
   for (int k : {LO_FX, LO_FY, LO_FZ, HI_FX, HI_FY, HI_FZ, LO_Z, HI_Z})
     EXPECT_NEAR(w[k], want[k], 1.0e-12 * std::max(1.0, fabs(want[k]))) << k;
   EXPECT_NEAR(w[LO_DX], nsteps * dt * vlo[0], 1.0e-15);
@@ -644,8 +664,8 @@ void stock_setup(Lammps &lmp, const std::vector<Ball> &balls, bool stock, double
              "twisting sds %.17g %.17g %.17g zplane 0.0 NULL",
              mut, 1.0e5 * a * a, 0.0575 * a * a, 0.1 * a);
   else
-    snprintf(line, sizeof(line), "fix w all grflow/wall 1.0e6 1.15 mut %.17g zlo 0.0 velocity_arm full",
-             mut);
+    snprintf(line, sizeof(line),
+             "fix w all grflow/wall 1.0e6 1.15 mut %.17g zlo 0.0 velocity_arm full", mut);
   lmp.cmds({line, "fix load all addforce 0.0 0.0 -1.0", "fix nve all nve/sphere",
             "timestep " + fmt_double(dt)});
 }
@@ -835,14 +855,13 @@ TEST(FixWallMoving, WallDragsSphereByFriction)
   const double x0 = lmp.gather3("x")[0];
 
   const int nsteps = 4000;
-  lmp.cmds({"fix_modify w wall lo vel " + fmt_double(u) + " 0 0",
-            "variable vx equal vx[1]", "compute om all property/atom omegay",
-            "compute wy all reduce sum c_om", "variable wy equal c_wy",
-            "fix recf all vector 1 f_w[1] f_w[3]", "fix recv all vector 1 v_vx v_wy",
-            "run " + std::to_string(nsteps)});
+  lmp.cmds({"fix_modify w wall lo vel " + fmt_double(u) + " 0 0", "variable vx equal vx[1]",
+            "compute om all property/atom omegay", "compute wy all reduce sum c_om",
+            "variable wy equal c_wy", "fix recf all vector 1 f_w[1] f_w[3]",
+            "fix recv all vector 1 v_vx v_wy", "run " + std::to_string(nsteps)});
   auto rec = [&](int row, int col) {
-    auto *p = (double *) lammps_extract_fix(lmp.handle, col < 2 ? "recf" : "recv",
-                                            LMP_STYLE_GLOBAL, LMP_TYPE_ARRAY, row, col % 2);
+    auto *p = (double *) lammps_extract_fix(lmp.handle, col < 2 ? "recf" : "recv", LMP_STYLE_GLOBAL,
+                                            LMP_TYPE_ARRAY, row, col % 2);
     const double v = p ? *p : NAN;
     lammps_free(p);
     return v;
@@ -913,8 +932,7 @@ TEST_F(WallPacking, PressureAndNetworkStressMatchWallForces)
             "compute ca all contact/atom", "compute cs all reduce sum c_ca",
             "compute fab all fabric radius contact", "compute sa all stress/atom NULL fix",
             "compute sas all reduce sum c_sa[1] c_sa[2] c_sa[3] c_sa[4] c_sa[5] c_sa[6]",
-            "thermo_style custom step ke c_pv[3] c_pp[3] c_pf[3] c_cs c_fab[1] c_sas[3]",
-            "run 0"});
+            "thermo_style custom step ke c_pv[3] c_pp[3] c_pf[3] c_cs c_fab[1] c_sas[3]", "run 0"});
   const auto w = fvec(lmp, "w");
   const double vol = lmp.thermo("vol"), lx = lmp.thermo("lx"), ly = lmp.thermo("ly");
   const double flo = w[LO_FZ], fhi = w[HI_FZ], zlo = w[LO_Z], zhi = w[HI_Z];
@@ -964,9 +982,9 @@ TEST_F(WallPacking, PressureAndNetworkStressMatchWallForces)
   // F_hi z_hi - F_lo z_lo plus the contact points' offset delta/2 behind the walls
   const double W = pv[2] * vol;
   const double balance = fhi * zhi - (-flo) * zlo + half_delta_fn;
-  EXPECT_LT(measured("packing: P_zz V vs F_hi z_hi - F_lo z_lo + sum f_n delta/2",
-                     fabs(W - balance) / W),
-            1.0e-6);
+  EXPECT_LT(
+      measured("packing: P_zz V vs F_hi z_hi - F_lo z_lo + sum f_n delta/2", fabs(W - balance) / W),
+      1.0e-6);
   measured("packing: P_zz V / (F (z_hi - z_lo)) - 1", W / (fhi * (zhi - zlo)) - 1.0);
   EXPECT_LT(fabs(W / (fhi * (zhi - zlo)) - 1.0), 1.0e-3);
 
@@ -1087,28 +1105,42 @@ TEST(FixWallNearList, SameTrajectoryAsTheFullPass)
     // a hot gas of 64 spheres at about 1 m/s (with a small skin the
     // neighbor lists are built every few dozen steps) between a fixed
     // bottom wall and a top wall coming down at 0.5 m/s
-    lmp.cmds({"units si", "atom_style sphere", "atom_modify map array", "boundary p p f",
-              "comm_modify vel yes", "lattice sc 2.0e-3", "region box block 0 4 0 4 0 5",
-              "create_box 1 box", "region gas block 0 4 0 4 0.5 4.5",
+    lmp.cmds({"units si",
+              "atom_style sphere",
+              "atom_modify map array",
+              "boundary p p f",
+              "comm_modify vel yes",
+              "lattice sc 2.0e-3",
+              "region box block 0 4 0 4 0 5",
+              "create_box 1 box",
+              "region gas block 0 4 0 4 0.5 4.5",
               "create_atoms 1 region gas",
               "variable d atom 1.0e-3+random(0,1,4321)*0.6e-3",
               "set group all diameter v_d density 2650",
               "velocity all create 1.4e17 5 dist gaussian",
-              "neighbor 1.0e-5 bin", "neigh_modify delay 0 every 1 check yes",
-              "timestep 1.0e-7", "pair_style granular/grflow",
+              "neighbor 1.0e-5 bin",
+              "neigh_modify delay 0 every 1 check yes",
+              "timestep 1.0e-7",
+              "pair_style granular/grflow",
               "pair_coeff * * 1.0e6 1.15 mut 0.4",
               "fix w all grflow/wall 1.0e6 1.15 mut 0.4 zlo 0.0 zhi 9.0e-3",
-              "fix_modify w wall hi vel 0.1 0 -0.5", "fix nve all nve/sphere",
-              "variable mu equal 0.4", "thermo 1000"});
+              "fix_modify w wall hi vel 0.1 0 -0.5",
+              "fix nve all nve/sphere",
+              "variable mu equal 0.4",
+              "thermo 1000"});
     if (full_pass) lmp.cmd("fix adapt all adapt 1 pair granular/grflow mut * * v_mu");
     // the mean normal force on the walls over the run: they are touched
-    lmp.cmds({"variable fz equal abs(f_w[3])+abs(f_w[9])",
-              "fix fz all ave/time 1 20000 20000 v_fz", "run 20000"});
+    lmp.cmds({"variable fz equal abs(f_w[3])+abs(f_w[9])", "fix fz all ave/time 1 20000 20000 v_fz",
+              "run 20000"});
     struct Result {
       std::vector<double> x, v, w, wall;
       double builds, fz;
-    } r{lmp.gather3("x"), lmp.gather3("v"),     lmp.gather3("omega"),
-        fvec(lmp, "w"),   lmp.thermo("nbuild"), *(double *) lammps_extract_fix(lmp.handle, "fz", LMP_STYLE_GLOBAL, LMP_TYPE_SCALAR, 0, 0)};
+    } r{lmp.gather3("x"),
+        lmp.gather3("v"),
+        lmp.gather3("omega"),
+        fvec(lmp, "w"),
+        lmp.thermo("nbuild"),
+        *(double *) lammps_extract_fix(lmp.handle, "fz", LMP_STYLE_GLOBAL, LMP_TYPE_SCALAR, 0, 0)};
     return r;
   };
   const auto near = run(false), full = run(true);
@@ -1129,11 +1161,15 @@ TEST(FixWallNearList, SameTrajectoryAsTheFullPass)
 // Bad input
 // ---------------------------------------------------------------------------
 
-const std::vector<std::string> one_sphere = {
-    "units si", "atom_style sphere", "atom_modify map array", "boundary p p f", "region box block 0 0.01 0 0.01 0 0.01",
-    "create_box 1 box", "create_atoms 1 single 0.005 0.005 0.005",
-    "set atom 1 diameter 1.0e-3 density 2650", "timestep 1.0e-6"};
-
+const std::vector<std::string> one_sphere = {"units si",
+                                             "atom_style sphere",
+                                             "atom_modify map array",
+                                             "boundary p p f",
+                                             "region box block 0 0.01 0 0.01 0 0.01",
+                                             "create_box 1 box",
+                                             "create_atoms 1 single 0.005 0.005 0.005",
+                                             "set atom 1 diameter 1.0e-3 density 2650",
+                                             "timestep 1.0e-6"};
 
 TEST(FixWallErrors, BadFixCommand)
 {
@@ -1160,7 +1196,8 @@ TEST(FixWallErrors, BadFixCommand)
       {"fix w all grflow/wall 1.0e6 1.15 rolling on zlo 0.0",
        "fix grflow/wall rolling takes only the value off, not on"},
       {"fix w all grflow/wall 1.0e6 1.15 kt", "Missing value for fix grflow/wall keyword kt"},
-      {"fix w all grflow/wall 1.0e6 1.15 zlo 0.0 mut 0.3", "contact keyword mut must come right after kn cn"},
+      {"fix w all grflow/wall 1.0e6 1.15 zlo 0.0 mut 0.3",
+       "contact keyword mut must come right after kn cn"},
   };
   for (const auto &c : cases) {
     const std::string msg = error_after(one_sphere, c.line);
@@ -1262,8 +1299,8 @@ TEST(FixWallErrors, RespaAndRestartMismatch)
   {
     Lammps lmp;
     lmp.cmds(one_sphere);
-    lmp.cmds({"fix w all grflow/wall 1.0e6 1.15 zlo 0.001 zhi 0.009", "run 0",
-              "write_restart " + file});
+    lmp.cmds(
+        {"fix w all grflow/wall 1.0e6 1.15 zlo 0.001 zhi 0.009", "run 0", "write_restart " + file});
   }
   msg = error_after({"read_restart " + file}, "fix w all grflow/wall 1.0e6 1.15 zlo 0.001");
   EXPECT_NE(msg.find("Fix grflow/wall w: restart file has other walls than the command"),
@@ -1285,22 +1322,12 @@ TEST(FixWallErrors, DamagedRestartData)
     lmp.cmds({"fix w all grflow/wall 1.0e6 1.15 zlo 0.001 zhi 0.009",
               "fix_modify w wall hi vel 0.01 0 0", "run 0", "write_restart " + file});
   }
-  std::ifstream in(file, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const double tag = LAMMPS_NS::GRFLOW::RESTART_TAG;
-  const size_t at = bytes.find(std::string((const char *) &tag, sizeof(double)));
-  ASSERT_NE(at, std::string::npos) << "no GRFLOW restart block in " << file;
-  ASSERT_EQ(bytes.find(std::string((const char *) &tag, sizeof(double)), at + 1),
-            std::string::npos);
-
-  // value k of the block (0: tag, 1: version, 2: count, 3...: data) set to x
+  ASSERT_NE(grflow_block(file_bytes(file), 14.0), std::string::npos)
+      << "no single GRFLOW restart block of 14 values in " << file;
   auto damaged = [&](int k, double x) {
-    std::string b = bytes;
-    memcpy(&b[at + k * sizeof(double)], &x, sizeof(double));
-    const std::string out = workfile("wall_damaged.restart");
-    std::ofstream(out, std::ios::binary) << b;
-    return error_after({"read_restart " + out},
-                       "fix w all grflow/wall 1.0e6 1.15 zlo 0.001 zhi 0.009");
+    return error_after(
+        {"read_restart " + damaged_restart(file, 14.0, k, x, "wall_damaged.restart")},
+        "fix w all grflow/wall 1.0e6 1.15 zlo 0.001 zhi 0.009");
   };
   // undamaged: read back
   {
@@ -1313,12 +1340,10 @@ TEST(FixWallErrors, DamagedRestartData)
             std::string::npos)
       << msg;
   msg = damaged(2, 13.0);
-  EXPECT_NE(msg.find("hold 13 values, expected 14: the file is damaged"), std::string::npos)
-      << msg;
+  EXPECT_NE(msg.find("hold 13 values, expected 14: the file is damaged"), std::string::npos) << msg;
   // the top wall's z (values: lo active z vx vy vz dx dy, hi active z ...)
   msg = damaged(3 + 8, std::numeric_limits<double>::quiet_NaN());
-  EXPECT_NE(msg.find("Fix grflow/wall w: restart value 9 of 14 is nan"), std::string::npos)
-      << msg;
+  EXPECT_NE(msg.find("Fix grflow/wall w: restart value 9 of 14 is nan"), std::string::npos) << msg;
   msg = damaged(3 + 9, std::numeric_limits<double>::infinity());
   EXPECT_NE(msg.find("restart value 10 of 14 is inf"), std::string::npos) << msg;
 }
