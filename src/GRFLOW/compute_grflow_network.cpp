@@ -42,6 +42,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 using namespace LAMMPS_NS;
 
@@ -296,8 +297,29 @@ void ComputeGRFLOWNetwork::compute_vector()
   // walls (fixes cannot come or go within a run); between runs (library
   // calls, variables) they are done here, as init() may not have been
   if (update->whichflag == 0) check_setup();
-  Pair *pair = force->pair;
-  NeighList *list = pair->list;
+  require_current_contacts();
+  invoked_vector = update->ntimestep;
+  grow_peratom();
+
+  const double volume = refresh_ghosts_and_inside();
+  // per processor: stress sums sum l (x) f (9), fabric sums sum n (x) n (9),
+  // particles inside, floaters, contact ends, histogram of contact numbers
+  std::vector<double> local(SUMS_HIST + cmax + 1, 0.0), total(local.size());
+  sum_pair_contacts(&local[SUMS_STRESS], &local[SUMS_FABRIC]);
+  sum_wall_contacts(&local[SUMS_STRESS], &local[SUMS_FABRIC]);
+  count_particles(local.data());
+  MPI_Allreduce(local.data(), total.data(), (int) local.size(), MPI_DOUBLE, MPI_SUM, world);
+  derive(total.data(), volume);
+}
+
+/* ----------------------------------------------------------------------
+   the pair style's neighbor list exists and every wall fix recorded its
+   contacts on this step
+------------------------------------------------------------------------- */
+
+void ComputeGRFLOWNetwork::require_current_contacts()
+{
+  NeighList *list = force->pair->list;
   if (!list || !list->numneigh)
     error->all(FLERR,
                "Compute grflow/network needs the pair style's neighbor list: "
@@ -318,16 +340,27 @@ void ComputeGRFLOWNetwork::compute_vector()
                "after a run (run 0 will do)",
                id, wfix->id, update->ntimestep);
   }
-  invoked_vector = update->ntimestep;
+}
 
-  if (atom->nmax > nmax) {
-    memory->destroy(inside);
-    memory->destroy(ncontact);
-    nmax = atom->nmax;
-    memory->create(inside, nmax, "grflow/network:inside");
-    memory->create(ncontact, nmax, "grflow/network:ncontact");
-  }
+/* ---------------------------------------------------------------------- */
 
+void ComputeGRFLOWNetwork::grow_peratom()
+{
+  if (atom->nmax <= nmax) return;
+  memory->destroy(inside);
+  memory->destroy(ncontact);
+  nmax = atom->nmax;
+  memory->create(inside, nmax, "grflow/network:inside");
+  memory->create(ncontact, nmax, "grflow/network:ncontact");
+}
+
+/* ----------------------------------------------------------------------
+   ghosts as the pair style would see them, and inside[] of owned and
+   ghost atoms; returns the volume of the sub-volume
+------------------------------------------------------------------------- */
+
+double ComputeGRFLOWNetwork::refresh_ghosts_and_inside()
+{
   // ghosts are refreshed by the integrator before the forces, not after:
   // at the end of a step their velocities are half a step old and, after
   // a box change (fix deform), their positions are those of the old box.
@@ -339,7 +372,20 @@ void ComputeGRFLOWNetwork::compute_vector()
   set_inside(volume);
   commflag = INSIDE;
   comm->forward_comm(this);
+  return volume;
+}
 
+/* ----------------------------------------------------------------------
+   particle-particle contacts: per contact, the end of each particle inside
+   contributes its arm to the stress, (a - delta/2) n (x) f with f the
+   force on i, and n (x) n to the fabric; ncontact[] counts them (summed
+   from ghosts to owners with newton on)
+------------------------------------------------------------------------- */
+
+void ComputeGRFLOWNetwork::sum_pair_contacts(double *sig, double *fab)
+{
+  Pair *pair = force->pair;
+  NeighList *list = pair->list;
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
   for (int i = 0; i < nall; i++) ncontact[i] = 0.0;
@@ -351,10 +397,6 @@ void ComputeGRFLOWNetwork::compute_vector()
   const double *special_lj = force->special_lj;
   const double *svector = pair->svector;
 
-  // per contact: the end of each particle inside contributes its arm to the
-  // stress (a - delta/2) n (x) f, f = force on i, and n (x) n to the fabric
-
-  double sig[3][3] = {{0.0}}, fab[3][3] = {{0.0}};
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     const int *jlist = list->firstneigh[i];
@@ -397,8 +439,8 @@ void ComputeGRFLOWNetwork::compute_vector()
       const double ends = (use_i ? 1.0 : 0.0) + (use_j ? 1.0 : 0.0);
       for (int a = 0; a < 3; a++)
         for (int b = 0; b < 3; b++) {
-          sig[a][b] += arm * n[a] * f[b];
-          fab[a][b] += ends * n[a] * n[b];
+          sig[3 * a + b] += arm * n[a] * f[b];
+          fab[3 * a + b] += ends * n[a] * n[b];
         }
     }
   }
@@ -407,10 +449,16 @@ void ComputeGRFLOWNetwork::compute_vector()
     commflag = NCONTACTS;
     comm->reverse_comm(this);
   }
+}
 
-  // contacts of owned particles with GRFLOW walls (force-bearing ones are
-  // recorded by the wall fix on this step): n is the wall normal
+/* ----------------------------------------------------------------------
+   contacts of owned particles inside with GRFLOW walls (the force-bearing
+   ones its post_force() recorded on this step): n is the wall normal
+------------------------------------------------------------------------- */
 
+void ComputeGRFLOWNetwork::sum_wall_contacts(double *sig, double *fab)
+{
+  const int nlocal = atom->nlocal;
   for (auto *wfix : walls)
     for (int i = 0; i < nlocal; i++) {
       if (inside[i] <= 0.0) continue;
@@ -420,39 +468,43 @@ void ComputeGRFLOWNetwork::compute_vector()
         const double *fw = wfix->contact_force(i, w);
         const double nz = wfix->normal_sign(w);
         ncontact[i] += 1.0;
-        for (int b = 0; b < 3; b++) sig[2][b] += arm * nz * fw[b];
-        fab[2][2] += 1.0;
+        for (int b = 0; b < 3; b++) sig[3 * 2 + b] += arm * nz * fw[b];
+        fab[3 * 2 + 2] += 1.0;
       }
     }
+}
 
-  // per particle: counts and the histogram of contact numbers
+/* ----------------------------------------------------------------------
+   per owned particle inside: the count, floaters, contact ends and the
+   histogram of contact numbers (sums[SUMS_NP...])
+------------------------------------------------------------------------- */
 
-  const int nbin = cmax + 1;
-  const int nlocal_sums = 9 + 9 + 3 + nbin;
-  double *local = new double[nlocal_sums]();
-  for (int a = 0; a < 3; a++)
-    for (int b = 0; b < 3; b++) {
-      local[3 * a + b] = sig[a][b];
-      local[9 + 3 * a + b] = fab[a][b];
-    }
+void ComputeGRFLOWNetwork::count_particles(double *sums)
+{
+  const int nlocal = atom->nlocal;
   for (int i = 0; i < nlocal; i++) {
     if (inside[i] <= 0.0) continue;
     const int c = (int) ncontact[i];
-    local[18] += 1.0;
-    if (c == 0) local[19] += 1.0;
-    local[20] += c;
-    local[21 + MIN(c, cmax)] += 1.0;
+    sums[SUMS_NP] += 1.0;
+    if (c == 0) sums[SUMS_FLOAT] += 1.0;
+    sums[SUMS_ENDS] += c;
+    sums[SUMS_HIST + MIN(c, cmax)] += 1.0;
   }
-  double *total = new double[nlocal_sums];
-  MPI_Allreduce(local, total, nlocal_sums, MPI_DOUBLE, MPI_SUM, world);
+}
 
+/* ----------------------------------------------------------------------
+   the output vector from the sums over all processors
+------------------------------------------------------------------------- */
+
+void ComputeGRFLOWNetwork::derive(const double *total, double volume)
+{
   double s[3][3], sym[3][3], fabric[3][3];
   for (int a = 0; a < 3; a++)
     for (int b = 0; b < 3; b++) {
-      s[a][b] = total[3 * a + b] / volume;
-      fabric[a][b] = total[9 + 3 * a + b];
+      s[a][b] = total[SUMS_STRESS + 3 * a + b] / volume;
+      fabric[a][b] = total[SUMS_FABRIC + 3 * a + b];
     }
-  const double np = total[18], nfloat = total[19], csum = total[20];
+  const double np = total[SUMS_NP], nfloat = total[SUMS_FLOAT], csum = total[SUMS_ENDS];
 
   // stress: LAMMPS order and convention (compression positive,
   // sigma_ab = sum l_a f_b / V); derived values use the symmetric part
@@ -510,10 +562,7 @@ void ComputeGRFLOWNetwork::compute_vector()
   vector[AXZ] = an[0][2];
   vector[AYZ] = an[1][2];
   vector[VOLUME] = volume;
-  for (int c = 0; c < nbin; c++) vector[PC0 + c] = (np > 0.0) ? total[21 + c] / np : 0.0;
-
-  delete[] local;
-  delete[] total;
+  for (int c = 0; c <= cmax; c++) vector[PC0 + c] = (np > 0.0) ? total[SUMS_HIST + c] / np : 0.0;
 }
 
 /* ---------------------------------------------------------------------- */

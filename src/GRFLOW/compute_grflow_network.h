@@ -81,9 +81,21 @@ class ComputeGRFLOWNetwork : public Compute {
   double *ncontact;    // force-bearing contacts per atom
   int commflag;
 
+  // the sums of compute_vector(), per processor and then over all: stress
+  // sum l (x) f (9), fabric sum n (x) n (9), particles inside, floaters,
+  // contact ends, histogram of contact numbers (cmax + 1)
+  enum { SUMS_STRESS = 0, SUMS_FABRIC = 9, SUMS_NP = 18, SUMS_FLOAT, SUMS_ENDS, SUMS_HIST };
+
   void check_setup();
   double eval(const char *, const char *);
   void set_inside(double &volume);
+  void require_current_contacts();
+  void grow_peratom();
+  double refresh_ghosts_and_inside();
+  void sum_pair_contacts(double *sig, double *fab);
+  void sum_wall_contacts(double *sig, double *fab);
+  void count_particles(double *sums);
+  void derive(const double *total, double volume);
 };
 
 }    // namespace LAMMPS_NS
