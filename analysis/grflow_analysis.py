@@ -551,6 +551,96 @@ def peak_ac_per_cycle(series, N):
     return out
 
 
+# Isostatic coordination number of frictional spheres counted as the paper
+# does: 3 force components per contact against 6 equilibrium equations per
+# particle.  (Counting the rolling and twisting moments of the contact law
+# as unknowns too, 6 per contact, would put it at 2.)
+Z_ISOSTATIC = 4.0
+
+
+def static_redundancy(z_g, z_iso=Z_ISOSTATIC):
+    """Degree of static redundancy per equation, (3 N_c - 6 n) / (6 n) with
+    n = N_p - N_p^0 the particles that carry contacts: z_g / z_iso - 1.
+    Negative: fewer contact force unknowns than equilibrium equations."""
+    return np.asarray(z_g, dtype=float) / z_iso - 1.0
+
+
+def _logistic_fit(n, z, n_centres=121, n_widths=25):
+    """Least-squares fit of z = a + b / (1 + exp(-(n - n0) / w)) by a grid
+    over n0 (within the data) and w (1/200 to 1/2 of the span, log-spaced),
+    a and b by linear regression at each grid point, then the grid refined
+    twice around the best point.  Returns (n0, w, a, b, rms residual)."""
+    span = n[-1] - n[0]
+    c_lo, c_hi = n[0], n[-1]
+    w_lo, w_hi = np.log(span / 200.0), np.log(span / 2.0)
+    best = None
+    zc = z - z.mean()
+    szz = float(zc @ zc)
+    for _ in range(3):
+        centres = np.linspace(c_lo, c_hi, n_centres)
+        for w in np.exp(np.linspace(w_lo, w_hi, n_widths)):
+            # one row per centre: the logistic, overflow-free via tanh
+            x = 0.5 * (1.0 + np.tanh(0.5 * (n[None, :] - centres[:, None]) / w))
+            xc = x - x.mean(axis=1, keepdims=True)
+            sxx = np.einsum("ij,ij->i", xc, xc)
+            sxz = xc @ zc
+            good = sxx > 1e-12 * len(n)
+            b = np.where(good, sxz / np.where(good, sxx, 1.0), 0.0)
+            r = np.where(good, szz - b * sxz, np.inf)     # residual sum of squares
+            m = int(np.argmin(r))
+            if best is None or r[m] < best[4]:
+                a = float(z.mean() - b[m] * x[m].mean())
+                best = (float(centres[m]), float(w), a, float(b[m]), float(r[m]))
+        # refine: a finer grid around the best point
+        dc = (c_hi - c_lo) / (n_centres - 1)
+        c_lo, c_hi = best[0] - 2 * dc, best[0] + 2 * dc
+        dw = (w_hi - w_lo) / (n_widths - 1)
+        w_lo, w_hi = np.log(best[1]) - 2 * dw, np.log(best[1]) + 2 * dw
+    n0, w, a, b, r = best
+    return n0, w, a, b, math.sqrt(max(r, 0.0) / len(n))
+
+
+def zg_inflections(series, N, events, liq, max_rows=2000):
+    """The inflection point of z_g(N) in the rise through each liquefaction
+    exit.  Within the quarter cycle that holds the exit (from the first
+    zero-crossing of tau after a reversal to the next reversal), z_g(N) is
+    fitted with a logistic step z = a + b / (1 + exp(-(N - N0)/w)) (least
+    squares; at most max_rows rows, evenly taken); its inflection is N0,
+    where z = a + b/2.  A fit rather than the steepest point of the data:
+    z_g is a fluctuating count, and the slope of an S-shaped rise is flat
+    near its inflection, so the steepest sampled point wanders.  Returns a
+    list of dicts (exit row, N0, z_g = a + b/2, w, rms residual), one per
+    exit whose quarter cycle is complete in the series and rises (b > 0)."""
+    zg = np.asarray(series["z_g"], dtype=float)
+    rr = events["reversal_rows"]
+    cr = events["crossing_rows"]
+    starts = sorted((row, k) for k, row in cr.items() if row is not None)
+    out = []
+    for e in liq["exits"]:
+        before = [(row, k) for row, k in starts if row <= e]
+        if not before:
+            continue
+        start, k = before[-1]
+        stop = rr[k] if k < len(rr) else None      # reversal k + 1
+        if stop is None or stop <= e:
+            continue
+        n = np.asarray(N[start:stop + 1], dtype=float)
+        z = zg[start:stop + 1]
+        ok = np.isfinite(z) & np.isfinite(n)
+        n, z = n[ok], z[ok]
+        if len(n) < 5 or not n[-1] > n[0]:
+            continue
+        if len(n) > max_rows:
+            take = np.linspace(0, len(n) - 1, max_rows).round().astype(int)
+            n, z = n[take], z[take]
+        n0, w, a, b, rms = _logistic_fit(n, z)
+        if b <= 0.0:
+            continue
+        out.append({"exit_row": int(e), "N": float(n0), "z_g": float(a + 0.5 * b),
+                    "width": float(w), "rms": float(rms)})
+    return out
+
+
 # ---------------------------------------------------------------- summary
 
 # The paper's values (paper/isochoric-cyclic-shearing.md), with the tolerance
@@ -593,6 +683,15 @@ PAPER = {
     "z_g_post_IL_min": (1.5, 0.5, "abs",
                         "Sec. 4: z_g 'fluctuates significantly down to values as low "
                         "as 1.5'"),
+    "z_g_inflections": (3.6, 0.2, "each",
+                        "Sec. 4: 'The horizontal dashed line for z_g = 3.6 corresponds to "
+                        "the inflection point of z_g as a function of N, coinciding with the "
+                        "exit of liquefaction state (C0' and C2')'"),
+    "z_g_inflection_mean": (3.6, 0.2, "abs", "as z_g_inflections"),
+    "static_redundancy_post_IL_max": (0.0, 0.0, "max",
+                                      "Sec. 4: after initial liquefaction z_g 'stays below "
+                                      "4.0 and fluctuates ... with a negative static "
+                                      "redundancy'"),
     "n_exits": (None, None, None, "no number given"),
     "z_g_at_exits": (3.6, 0.2, "each",
                      "Sec. 4: 'z_g = 3.6 ... coinciding with the exit of liquefaction "
@@ -763,6 +862,24 @@ def summary(series, prep=None, cycle_index=None):
                float(np.mean(zex)) if ex else NOT_REACHED),
         _entry("z_g_exit_std", "standard deviation (population) of z_g at the exits",
                "-", float(np.std(zex)) if ex else NOT_REACHED),
+    ]
+    infl = zg_inflections(series, N, events, liq)
+    zin = [d["z_g"] for d in infl]
+    if onset is None:
+        red_max = NOT_REACHED
+    else:
+        post = zg[onset:][np.isfinite(zg[onset:])]
+        red_max = float(static_redundancy(post.max())) if len(post) else NOT_REACHED
+    entries += [
+        _entry("z_g_inflections",
+               "z_g at the inflection of a logistic fitted to z_g(N) over the quarter "
+               "cycle of each exit", "-",
+               zin if zin else NOT_REACHED),
+        _entry("z_g_inflection_mean", "mean of z_g_inflections", "-",
+               float(np.mean(zin)) if zin else NOT_REACHED),
+        _entry("static_redundancy_post_IL_max",
+               "largest static redundancy z_g/4 - 1 after initial liquefaction (3 force "
+               "unknowns per contact, 6 equations per particle)", "-", red_max),
     ]
     ist = inertial_stats(series, onset)
     entries += [

@@ -565,3 +565,38 @@ def test_cli_subprocess_exit_codes(tmp_path):
     bad = subprocess.run([sys.executable, script, str(tmp_path / "absent")],
                          capture_output=True, text=True)
     assert bad.returncode == 2 and "does not exist" in bad.stderr
+
+
+def test_static_redundancy():
+    # (3 N_c - 6 n) / (6 n) with z_g = 2 N_c / n
+    n, Nc = 100, 180
+    assert ga.static_redundancy(2 * Nc / n) == pytest.approx((3 * Nc - 6 * n) / (6 * n))
+    assert ga.static_redundancy(4.0) == 0.0
+    assert ga.static_redundancy(2.0) == -0.5
+
+
+def test_zg_inflection_of_a_logistic_rise():
+    """z_g rises as a logistic in N (inflection at N0, z = 2.7) with
+    deterministic uniform scatter of +-0.05, in a quarter cycle from a
+    zero-crossing (row 0) to a reversal (the last row); the exit (r_u below
+    ru_liq) comes later in the rise than the inflection.  Over 20 scatter
+    seeds the fit finds N0 and z within 0.004 cycles and 0.02: the
+    scatter's rms (0.029) over ~500 rows of the rise, times the rise's
+    width and height, bounds the error near 0.029/sqrt(500) ~ 0.0013 in
+    units of dz, i.e. 0.003 in z; the bounds hold 6-7 such errors."""
+    rows = 4001
+    N = np.linspace(32.5, 32.75, rows)
+    N0, w, zlo, dz = 32.61, 0.02, 1.5, 2.4
+    exit_row = int(np.searchsorted(N, 32.66))
+    events = {"reversal_rows": [None] * 65 + [rows - 1], "crossing_rows": {65: 0}}
+    liq = {"onset": 0, "exits": [exit_row], "entries": []}
+    for seed in range(20):
+        rng = np.random.default_rng(seed)
+        zg = zlo + dz / (1.0 + np.exp(-(N - N0) / w)) + rng.uniform(-0.05, 0.05, rows)
+        found = ga.zg_inflections({"z_g": zg}, N, events, liq)
+        assert len(found) == 1 and found[0]["exit_row"] == exit_row
+        assert abs(found[0]["N"] - N0) <= 0.004, seed
+        assert abs(found[0]["z_g"] - (zlo + dz / 2)) <= 0.02, seed
+    # an exit whose quarter cycle has not ended in the series is skipped
+    events_open = {"reversal_rows": [None] * 65, "crossing_rows": {65: 0}}
+    assert ga.zg_inflections({"z_g": zg}, N, events_open, liq) == []
