@@ -600,13 +600,25 @@ def _logistic_fit(n, z, n_centres=121, n_widths=25):
     return n0, w, a, b, math.sqrt(max(r, 0.0) / len(n))
 
 
-def zg_inflections(series, N, events, liq, max_rows=2000):
+# Half-width, in cycles, of the window around each exit over which the
+# logistic is fitted.  In the paper-size runs z_g climbs slowly through the
+# liquefied quarter cycle (about 1.5 to 2.8 over 0.1 cycles) and then jumps
+# to about 3.6 within about 0.005 cycles as the sample leaves liquefaction,
+# before the reversal; the window holds that jump several times over and
+# leaves out most of the slow climb, whose many rows would otherwise set
+# the fit.  (Chosen from the shape of z_g(N) in runs/sc/serial, before any
+# inflection value was computed with it.)
+INFLECTION_HALF_WINDOW_N = 0.02
+
+
+def zg_inflections(series, N, events, liq, max_rows=2000,
+                   half_window=INFLECTION_HALF_WINDOW_N):
     """The inflection point of z_g(N) in the rise through each liquefaction
-    exit.  Within the quarter cycle that holds the exit (from the first
-    zero-crossing of tau after a reversal to the next reversal), z_g(N) is
-    fitted with a logistic step z = a + b / (1 + exp(-(N - N0)/w)) (least
-    squares; at most max_rows rows, evenly taken); its inflection is N0,
-    where z = a + b/2.  A fit rather than the steepest point of the data:
+    exit.  Over the rows within half_window cycles of the exit, inside the
+    quarter cycle that holds it (from the first zero-crossing of tau after
+    a reversal to the next reversal), z_g(N) is fitted with a logistic step
+    z = a + b / (1 + exp(-(N - N0)/w)) (least squares; at most max_rows
+    rows, evenly taken); its inflection is N0, where z = a + b/2.  A fit rather than the steepest point of the data:
     z_g is a fluctuating count, and the slope of an S-shaped rise is flat
     near its inflection, so the steepest sampled point wanders.  Returns a
     list of dicts (exit row, N0, z_g = a + b/2, w, rms residual), one per
@@ -626,7 +638,7 @@ def zg_inflections(series, N, events, liq, max_rows=2000):
             continue
         n = np.asarray(N[start:stop + 1], dtype=float)
         z = zg[start:stop + 1]
-        ok = np.isfinite(z) & np.isfinite(n)
+        ok = np.isfinite(z) & np.isfinite(n) & (np.abs(n - N[e]) <= half_window)
         n, z = n[ok], z[ok]
         if len(n) < 5 or not n[-1] > n[0]:
             continue
