@@ -1,10 +1,13 @@
 #!/usr/bin/env python3
 """One table of the runs of bench/timestep_study.sh: per run directory
 (named s<seed>_f<dt_factor>) the preparation's e, z_g and p, N_IL, the
-liquefaction exits' z_g, the smallest z_g after initial liquefaction (all
-from figures/summary.json, as analysis/make_figures.py wrote them), the
-shear stage's steps and the wall time; then, per dt_factor, the mean and
-the spread (min-max) over the seeds.
+liquefaction exits' z_g, the smallest and largest z_g after initial
+liquefaction, z_g at the inflections of z_g(N) at the exits (all from
+figures/summary.json, as analysis/make_figures.py wrote them), the
+simulated time from initial liquefaction to the end of the series (at a
+fixed wall speed a measure of the strains of the post-liquefaction
+cycles; from series.txt), the shear stage's steps and the wall time;
+then, per dt_factor, the mean and the spread (min-max) over the seeds.
 
     /usr/bin/python3 bench/timestep_table.py RUNDIR ...
 """
@@ -16,10 +19,26 @@ from collections import defaultdict
 
 KEYS = [("e_prep", "e", "{:.4f}"), ("z_g_prep", "z_g0", "{:.3f}"), ("p_prep", "p0 (kPa)", "{:.1f}"),
         ("N_IL", "N_IL", "{:.2f}"), ("n_exits", "exits", "{:d}"),
-        ("z_g_exit_mean", "z_g exits", "{:.3f}"), ("z_g_post_IL_min", "min z_g", "{:.3f}")]
+        ("z_g_exit_mean", "z_g exits", "{:.3f}"), ("z_g_post_IL_min", "min z_g", "{:.3f}"),
+        ("z_g_post_IL_max", "max z_g", "{:.3f}"), ("z_g_inflection_mean", "z_g infl.", "{:.3f}"),
+        ("t_post_IL", "t after IL (s)", "{:.4f}")]
 
 
-def value(summary, key):
+def post_il_time(run, ru_liq):
+    """simulated time from the first row with r_u >= ru_liq to the last row"""
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "analysis"))
+    import grflow_analysis as ga
+    try:
+        series = ga.read_series(os.path.join(run, "series.txt"))
+    except (OSError, ga.FormatError):
+        return None
+    onset = ga.liquefaction(series, ru_liq)["onset"]
+    return None if onset is None else float(series["time"][-1] - series["time"][onset])
+
+
+def value(summary, key, run=None):
+    if key == "t_post_IL":
+        return post_il_time(run, summary.get("ru_liq", 0.99))
     v = next((e.get("measured") for e in summary.get("entries", []) if e.get("name") == key), None)
     if isinstance(v, str):
         return None    # "not reached" and the like
@@ -54,7 +73,7 @@ def main():
             wall = float(open(os.path.join(run, "wall_seconds.txt")).read())
         except OSError:
             pass
-        rows.append((m.group(2), m.group(1), [value(summary, k) for k, _, _ in KEYS],
+        rows.append((m.group(2), m.group(1), [value(summary, k, run) for k, _, _ in KEYS],
                      last_step(run), wall))
     rows.sort(key=lambda r: (float(r[0]), r[1]))
     head = ["dt_factor", "seed"] + [name for _, name, _ in KEYS] + ["shear steps", "wall (s)"]
