@@ -141,6 +141,18 @@ inline std::string error_after(const std::vector<std::string> &setup, const std:
   return lmp.error_of(bad);
 }
 
+// the error of the first of some commands that fails, in a new instance
+// ("" if none fails)
+inline std::string first_error(const std::vector<std::string> &lines)
+{
+  Lammps lmp;
+  for (const auto &line : lines) {
+    std::string msg = lmp.error_of(line);
+    if (!msg.empty()) return msg;
+  }
+  return "";
+}
+
 // the two half steps of fix nve/sphere (solid spheres, I = 0.4 m r^2), in
 // its order of operations, for hand integrations of a few bodies; Body has
 // x, v, w, f, t (3 each), rad and mass

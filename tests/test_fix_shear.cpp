@@ -522,27 +522,21 @@ TEST_F(Shear, DamagedRestartData)
       damaged_restart(file, 8.0, 4, std::numeric_limits<double>::quiet_NaN(), "shear_nan.restart");
   const std::string v99_file = damaged_restart(file, 8.0, 1, 99.0, "shear_v99.restart");
   ASSERT_NE(nan_file, "");
-  for (const auto &[damaged, expect] :
-       {std::make_pair(file, std::string()),
-        std::make_pair(v99_file,
-                       std::string("Fix grflow/shear sh: restart data of format version 99")),
-        std::make_pair(nan_file,
-                       std::string("Fix grflow/shear sh: restart value 2 of 8 is nan"))}) {
-    Lammps lmp;
-    std::string msg;
-    for (const auto &line :
-         {"read_restart " + damaged, std::string("comm_modify vel yes"),
-          std::string("fix w all grflow/wall 1.0e6 1.15 zlo 0.0 zhi 8.0e-3"),
-          std::string("variable zlo equal f_w[4]"), std::string("variable zhi equal f_w[10]"),
-          std::string("compute net all grflow/network zlimits v_zlo v_zhi"), shear_cmd(p)}) {
-      msg = lmp.error_of(line);
-      if (!msg.empty()) break;
-    }
-    if (expect.empty())
-      EXPECT_EQ(msg, "");
-    else
-      EXPECT_NE(msg.find(expect), std::string::npos) << msg;
-  }
+  auto setup = [p](const std::string &restart) -> std::vector<std::string> {
+    return {"read_restart " + restart,
+            "comm_modify vel yes",
+            "fix w all grflow/wall 1.0e6 1.15 zlo 0.0 zhi 8.0e-3",
+            "variable zlo equal f_w[4]",
+            "variable zhi equal f_w[10]",
+            "compute net all grflow/network zlimits v_zlo v_zhi",
+            shear_cmd(p)};
+  };
+  EXPECT_EQ(first_error(setup(file)), "");
+  std::string msg = first_error(setup(v99_file));
+  EXPECT_NE(msg.find("Fix grflow/shear sh: restart data of format version 99"), std::string::npos)
+      << msg;
+  msg = first_error(setup(nan_file));
+  EXPECT_NE(msg.find("Fix grflow/shear sh: restart value 2 of 8 is nan"), std::string::npos) << msg;
 }
 
 TEST_F(Shear, ShortRunsDecideOnlyEveryN)
