@@ -463,22 +463,11 @@ TEST(FixWallNetwork, WallContactsInComputeNetwork)
   // A between the walls (overlaps 1e-5 below, 2e-5 above), B on the lo wall
   // sliding slowly in x (overlap 3e-5), C floating.  The wall contacts count
   // for the particle inside: arm (a - delta/2) n (x) f, one contact, n n = e_z e_z
-  enum {
-    SXX,
-    SZZ = 2,
-    SXZ = 4,
-    PRESS = 6,
-    TAU = 7,
-    NP = 11,
-    NFLOAT = 12,
-    NCONTACT = 13,
-    ZG = 14,
-    AC = 16,
-    AXX = 18,
-    AZZ = 20,
-    VOLUME = 24,
-    PC0 = 25
-  };
+  // clang-format off
+  enum { SXX, SZZ = 2, SXZ = 4, PRESS = 6, TAU = 7, NP = 11, NFLOAT = 12, NCONTACT = 13, ZG = 14,
+         AC = 16, AXX = 18, AZZ = 20, VOLUME = 24, PC0 = 25 };
+  // clang-format on
+
   const double aA = 0.5e-3, aB = 0.3e-3, aC = 0.4e-3;
   const double dA1 = 1.0e-5, dA2 = 2.0e-5, dB = 3.0e-5, vB = 0.1;
   const double zA = aA - dA1, zhi = zA + aA - dA2;
