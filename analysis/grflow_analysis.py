@@ -618,9 +618,10 @@ def zg_inflections(series, N, events, liq, max_rows=2000,
     quarter cycle that holds it (from the first zero-crossing of tau after
     a reversal to the next reversal), z_g(N) is fitted with a logistic step
     z = a + b / (1 + exp(-(N - N0)/w)) (least squares; at most max_rows
-    rows, evenly taken); its inflection is N0, where z = a + b/2.  A fit rather than the steepest point of the data:
-    z_g is a fluctuating count, and the slope of an S-shaped rise is flat
-    near its inflection, so the steepest sampled point wanders.  Returns a
+    rows, evenly taken); its inflection is N0, where z = a + b/2.  A fit
+    rather than the steepest point of the data: z_g is a fluctuating
+    count, and the slope of an S-shaped rise is flat near its inflection,
+    so the steepest sampled point wanders.  Returns a
     list of dicts (exit row, N0, z_g = a + b/2, w, rms residual), one per
     exit whose quarter cycle is complete in the series and rises (b > 0)."""
     zg = np.asarray(series["z_g"], dtype=float)
@@ -884,8 +885,8 @@ def summary(series, prep=None, cycle_index=None):
         red_max = float(static_redundancy(post.max())) if len(post) else NOT_REACHED
     entries += [
         _entry("z_g_inflections",
-               "z_g at the inflection of a logistic fitted to z_g(N) over the quarter "
-               "cycle of each exit", "-",
+               "z_g at the inflection of a logistic fitted to z_g(N) within %g cycles of "
+               "each exit" % INFLECTION_HALF_WINDOW_N, "-",
                zin if zin else NOT_REACHED),
         _entry("z_g_inflection_mean", "mean of z_g_inflections", "-",
                float(np.mean(zin)) if zin else NOT_REACHED),

@@ -17,6 +17,9 @@ import re
 import sys
 from collections import defaultdict
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "analysis"))
+import grflow_analysis as ga  # noqa: E402
+
 KEYS = [("e_prep", "e", "{:.4f}"), ("z_g_prep", "z_g0", "{:.3f}"), ("p_prep", "p0 (kPa)", "{:.1f}"),
         ("N_IL", "N_IL", "{:.2f}"), ("n_exits", "exits", "{:d}"),
         ("z_g_exit_mean", "z_g exits", "{:.3f}"), ("z_g_post_IL_min", "min z_g", "{:.3f}"),
@@ -26,8 +29,6 @@ KEYS = [("e_prep", "e", "{:.4f}"), ("z_g_prep", "z_g0", "{:.3f}"), ("p_prep", "p
 
 def post_il_time(run, ru_liq):
     """simulated time from the first row with r_u >= ru_liq to the last row"""
-    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "analysis"))
-    import grflow_analysis as ga
     try:
         series = ga.read_series(os.path.join(run, "series.txt"))
     except (OSError, ga.FormatError):
