@@ -157,7 +157,8 @@ def test_crossing_at_the_box_face_is_the_walls_error(tmp_path):
     comes on a step with a neighbor list build: at 1000 m/s the atom moves a
     skin (1e-4 m) per step, so every step has one."""
     deck = tmp_path / "crossing_face.lmp"
-    deck.write_text(CROSSING.replace("1 1 2", "1 1 *").replace("vz -100.0", "vz -1000.0").replace("zlo 0.001 zhi 0.009", "zlo 0.0 zhi 0.01").replace(
+    deck.write_text(CROSSING.replace("1 1 2", "1 1 *").replace("vz -100.0", "vz -1000.0")
+                    .replace("zlo 0.001 zhi 0.009", "zlo 0.0 zhi 0.01").replace(
         "fix             nve", "pair_style      granular/grflow\n"
         "pair_coeff      * * 1.0e6 1.15\n"
         "neighbor        1.0e-4 bin\n"
