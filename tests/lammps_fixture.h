@@ -206,19 +206,20 @@ inline std::string workfile(const std::string &name)
 }
 
 // The GRFLOW restart block that holds count values (the wall fix 14, the
-// compress fix 13, the shear fix 8) in the bytes of a restart file: its
-// offset (at its tag; then version, count, values), npos if there is none
-// or more than one.
-inline size_t grflow_block(const std::string &bytes, double count)
+// compress fix 13, the shear fix 14) of format version (any if 0) in the
+// bytes of a restart file: its offset (at its tag; then version, count,
+// values), npos if there is none or more than one.
+inline size_t grflow_block(const std::string &bytes, double count, double version = 0.0)
 {
   const double tag = LAMMPS_NS::GRFLOW::RESTART_TAG;
   const std::string tagbytes((const char *) &tag, sizeof(double));
   size_t at = std::string::npos;
   for (size_t pos = bytes.find(tagbytes); pos != std::string::npos;
        pos = bytes.find(tagbytes, pos + 1)) {
-    double n;
+    double n, v;
+    memcpy(&v, &bytes[pos + sizeof(double)], sizeof(double));
     memcpy(&n, &bytes[pos + 2 * sizeof(double)], sizeof(double));
-    if (n != count) continue;
+    if (n != count || (version != 0.0 && v != version)) continue;
     if (at != std::string::npos) return std::string::npos;
     at = pos;
   }
@@ -232,13 +233,14 @@ inline std::string file_bytes(const std::string &file)
 }
 
 // a copy of a restart file (named name in the work directory) with value k
-// of the GRFLOW block of count values set to x (k = 0: tag, 1: version,
-// 2: count, 3...: the values); "" if the file has no such single block
+// of the GRFLOW block of count values (and format version, any if 0) set
+// to x (k = 0: tag, 1: version, 2: count, 3...: the values); "" if the
+// file has no such single block
 inline std::string damaged_restart(const std::string &file, double count, int k, double x,
-                                   const std::string &name)
+                                   const std::string &name, double version = 0.0)
 {
   std::string b = file_bytes(file);
-  const size_t at = grflow_block(b, count);
+  const size_t at = grflow_block(b, count, version);
   if (at == std::string::npos) return "";
   memcpy(&b[at + k * sizeof(double)], &x, sizeof(double));
   const std::string out = workfile(name);

@@ -26,7 +26,9 @@
      reversal at once, and it gives no false "integrated more than once"
      warning;
    - a p0 keyword of the compute does not leak into the first check;
-   - stop_cycles sets the done flag at the right reversal, fix halt stops;
+   - the fractional cycle count N at the events and at initial
+     liquefaction, by hand from the rule;
+   - stop_cycles sets the done flag when N reaches it, fix halt stops;
    - restart continuation and split runs take the same decisions as one run;
    - bad input gives a clear error.
 ------------------------------------------------------------------------- */
@@ -54,8 +56,8 @@ enum {
   P0,
   STEP_IL,
   TIME_IL,
-  CYCLES_IL,
-  CYCLES,
+  N_IL,
+  N_EVENT,
   DONE,
   EVENT,
   NSHEAR
@@ -188,6 +190,7 @@ TEST_F(Shear, WallVelocityAndReversalRule)
   double xw = rec[0].wall[HI_DX], xerr = 0.0;
   int dir = 1, nrev = 0, nplus = 0, nminus = 0, nzero = 0;
   bool await_zero = false;
+  double n_event = 0.0;
   std::vector<long> rev_steps;
   const double h0 = rec[0].wall[HI_Z] - rec[0].wall[LO_Z];
   for (size_t k = 0; k < rec.size(); k++) {
@@ -209,6 +212,7 @@ TEST_F(Shear, WallVelocityAndReversalRule)
       await_zero = false;
       event = 2;
       nzero++;
+      n_event = 0.5 * nrev;    // the crossing after reversal k is at N = k/2
     }
     if ((dir > 0 && tau >= amp) || (dir < 0 && tau <= -amp)) {
       (dir > 0 ? nplus : nminus)++;
@@ -217,12 +221,13 @@ TEST_F(Shear, WallVelocityAndReversalRule)
       rev_steps.push_back(r.step);
       await_zero = true;
       event = 1;
+      n_event = 0.5 * nrev - 0.25;    // reversal k is at N = k/2 - 1/4
     }
     // the event flag: 1 on a reversal step, 2 on the first zero-crossing after one
     ASSERT_EQ(r.sh[EVENT], event) << "step " << r.step;
     ASSERT_EQ(r.sh[DIRECTION], dir) << "step " << r.step << " tau " << tau;
     ASSERT_EQ(r.sh[REVERSALS], nrev) << "step " << r.step;
-    EXPECT_EQ(r.sh[CYCLES], 0.5 * nrev);
+    EXPECT_EQ(r.sh[N_EVENT], n_event) << "step " << r.step;
     EXPECT_DOUBLE_EQ(r.sh[GAMMA], r.sh[XWALL] / h0);
     // constant height and volume, to the last bit
     EXPECT_EQ(r.wall[HI_Z] - r.wall[LO_Z], h0);
@@ -254,29 +259,49 @@ TEST_F(Shear, P0RuAndInitialLiquefaction)
   EXPECT_EQ(rec[0].sh[RU], 0.0);
   long first = -1;
   double first_time = -1.0, maxru = 0.0;
-  int rev_il = 0;
+  // N at initial liquefaction by hand, from the event flag and the event
+  // counts of the rule (tested above): linear in time between the event
+  // before it and the event after it
+  double n_a = 0.0, t_a = rec[0].time, n_il = -1.0, n_il_a = 0.0, t_il_a = 0.0;
   for (const auto &r : rec) {
+    if (r.sh[EVENT] != 0.0) {
+      const double n = r.sh[REVERSALS] * 0.5 - (r.sh[EVENT] == 1.0 ? 0.25 : 0.0);
+      if (first >= 0 && n_il < 0.0)
+        n_il = n_il_a + (n - n_il_a) * (first_time - t_il_a) / (r.time - t_il_a);
+      n_a = n;
+      t_a = r.time;
+    }
     EXPECT_EQ(r.sh[P0], p);
     EXPECT_NEAR(r.sh[RU], 1.0 - r.sh[PRESS] / p, 1.0e-15);
     maxru = std::max(maxru, r.sh[RU]);
     if (first < 0 && r.sh[RU] >= R) {
       first = r.step;
       first_time = r.time;
-      rev_il = (int) r.sh[REVERSALS];
+      n_il_a = n_a;
+      t_il_a = t_a;
+      if (r.time == t_a) n_il = n_a;
     }
     EXPECT_EQ(r.sh[STEP_IL], (double) first) << r.step;
     if (first < 0) {
       EXPECT_EQ(r.sh[TIME_IL], -1.0);
-      EXPECT_EQ(r.sh[CYCLES_IL], 0.0);
+      EXPECT_EQ(r.sh[N_IL], -1.0);
     } else {
       EXPECT_EQ(r.sh[TIME_IL], first_time);
-      EXPECT_EQ(r.sh[CYCLES_IL], 0.5 * (r.sh[REVERSALS] - rev_il));
+      // -1 until the event after initial liquefaction; the same division
+      // of the same numbers, so equal to round-off of the operation order
+      if (n_il < 0.0)
+        EXPECT_EQ(r.sh[N_IL], -1.0) << r.step;
+      else
+        EXPECT_NEAR(r.sh[N_IL], n_il, 1.0e-14 * (1.0 + n_il)) << r.step;
     }
   }
   measured("max r_u", maxru);
-  printf("[ measured ] initial liquefaction (r_u >= %g) at step %ld\n", R, first);
+  printf("[ measured ] initial liquefaction (r_u >= %g) at step %ld, N_IL = %.6f\n", R, first,
+         n_il);
   ASSERT_GT(first, rec[0].step);
-  EXPECT_GT(rec.back().sh[CYCLES_IL], 0.0);
+  // not trivial: liquefaction strictly between two events, N_IL known
+  ASSERT_GT(n_il, 0.0);
+  EXPECT_NE(n_il, 0.25 * std::round(4.0 * n_il));
 }
 
 // p0 has one owner: the fix records it when shearing starts, so a compute
@@ -376,8 +401,10 @@ TEST_F(Shear, StopCyclesAndHalt)
     for (int chunk = 0; chunk < 400 && stop_step < 0; chunk++) {
       lmp.cmd("run " + std::to_string(EVERY) + " post no");
       const auto s = shear(lmp);
-      ASSERT_EQ(s[DONE], s[REVERSALS] >= 2 ? 1.0 : 0.0) << step(lmp);
-      if (s[REVERSALS] >= 2) stop_step = step(lmp);
+      // N reaches 1 at the first zero-crossing of tau after reversal 2
+      const bool one = s[REVERSALS] >= 3 || (s[REVERSALS] == 2 && s[N_EVENT] == 1.0);
+      ASSERT_EQ(s[DONE], one ? 1.0 : 0.0) << step(lmp);
+      if (one) stop_step = step(lmp);
     }
   }
   ASSERT_GT(stop_step, 0);
@@ -387,10 +414,12 @@ TEST_F(Shear, StopCyclesAndHalt)
   lmp.cmds({shear_cmd(p, "stop_cycles 1"), "variable done equal f_sh[13]",
             "fix stop all halt " + std::to_string(EVERY) + " v_done > 0.5 error continue",
             "run 20000"});
-  printf("[ measured ] second reversal (done) at step %ld, %ld steps of shear\n", stop_step,
+  printf("[ measured ] N = 1 (done) at step %ld, %ld steps of shear\n", stop_step,
          stop_step - start);
   EXPECT_EQ(step(lmp), stop_step);
   EXPECT_EQ(shear(lmp)[REVERSALS], 2.0);
+  EXPECT_EQ(shear(lmp)[N_EVENT], 1.0);
+  EXPECT_EQ(shear(lmp)[EVENT], 2.0);
   EXPECT_EQ(shear(lmp)[DONE], 1.0);
 }
 
@@ -486,7 +515,7 @@ TEST_F(Shear, RestartContinuesTheProtocol)
     EXPECT_EQ(ra2, ra) << "split at " << split;
     EXPECT_EQ(rb, ra) << "split at " << split;
     const auto sb = shear(lmp);
-    for (int k : {DIRECTION, REVERSALS, XWALL, P0, STEP_IL, CYCLES_IL, CYCLES}) {
+    for (int k : {DIRECTION, REVERSALS, XWALL, P0, STEP_IL, N_IL, N_EVENT}) {
       EXPECT_EQ(sb[k], sa[k]) << "entry " << k + 1 << " split " << split;
       EXPECT_EQ(sa2[k], sa[k]) << "entry " << k + 1 << " split " << split;
     }
@@ -519,9 +548,12 @@ TEST_F(Shear, DamagedRestartData)
     lmp.cmds({shear_cmd(p), "run 100 post no", "write_restart " + file});
   }
   const std::string nan_file =
-      damaged_restart(file, 8.0, 4, std::numeric_limits<double>::quiet_NaN(), "shear_nan.restart");
-  const std::string v99_file = damaged_restart(file, 8.0, 1, 99.0, "shear_v99.restart");
+      damaged_restart(file, 14.0, 4, std::numeric_limits<double>::quiet_NaN(), "shear_nan.restart",
+                      2.0);    // (the wall fix's block holds 14 values too, format 1)
+  const std::string v99_file = damaged_restart(file, 14.0, 1, 99.0, "shear_v99.restart", 2.0);
+  const std::string v1_file = damaged_restart(file, 14.0, 1, 1.0, "shear_v1.restart", 2.0);
   ASSERT_NE(nan_file, "");
+  ASSERT_NE(v1_file, "");
   auto setup = [p](const std::string &restart) -> std::vector<std::string> {
     return {"read_restart " + restart,
             "comm_modify vel yes",
@@ -536,7 +568,13 @@ TEST_F(Shear, DamagedRestartData)
   EXPECT_NE(msg.find("Fix grflow/shear sh: restart data of format version 99"), std::string::npos)
       << msg;
   msg = first_error(setup(nan_file));
-  EXPECT_NE(msg.find("Fix grflow/shear sh: restart value 2 of 8 is nan"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("Fix grflow/shear sh: restart value 2 of 14 is nan"), std::string::npos)
+      << msg;
+  // format 1 (before the fractional cycle count) cannot go on
+  msg = first_error(setup(v1_file));
+  EXPECT_NE(msg.find("Fix grflow/shear sh: restart data of format version 1 were written before"),
+            std::string::npos)
+      << msg;
 }
 
 TEST_F(Shear, ShortRunsDecideOnlyEveryN)

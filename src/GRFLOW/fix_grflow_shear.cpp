@@ -20,8 +20,9 @@
    of a fix grflow/wall (and a glued layer) moves in x at +-vx; the
    direction reverses when tau from a compute grflow/network reaches
    +tau_amp while moving +x or -tau_amp while moving -x.  Records p0 when
-   shearing starts, initial liquefaction (first r_u >= threshold) and the
-   reversal count; all of it goes to restart files.
+   shearing starts, initial liquefaction (first r_u >= threshold), the
+   reversal count and the fractional cycle count N (grflow_cycle_count.h);
+   all of it goes to restart files.
 ------------------------------------------------------------------------- */
 
 #include "fix_grflow_shear.h"
@@ -46,8 +47,8 @@ using namespace FixConst;
 using GRFLOW::read_restart_values;
 using GRFLOW::write_restart_values;
 
-static constexpr int NRESTART = 8;
-static constexpr int RESTART_VERSION = 1;
+static constexpr int NRESTART = 14;
+static constexpr int RESTART_VERSION = 2;
 enum { NO_EVENT, EVENT_REVERSAL, EVENT_ZERO };
 
 /* ---------------------------------------------------------------------- */
@@ -128,7 +129,7 @@ FixGRFLOWShear::FixGRFLOWShear(LAMMPS *lmp, int narg, char **arg) :
 
   started = 0;
   direction = 1;
-  reversals = reversals_il = 0;
+  reversals = 0;
   step_il = -1;
   p0 = 0.0;
   time_il = -1.0;
@@ -196,6 +197,7 @@ void FixGRFLOWShear::setup(int /*vflag*/)
                  p0);
     started = 1;
     direction = 1;
+    count.start(now());
   }
   // r_u at this step with this p0 (the compute may have been invoked with
   // another p0 of its own, its p0 keyword, just above or earlier)
@@ -278,6 +280,7 @@ void FixGRFLOWShear::check(bool decide)
     await_zero = 0;
     event_step = update->ntimestep;
     event_kind = EVENT_ZERO;
+    count.crossing(reversals, now());
   }
   if ((direction > 0 && tau >= tau_amp) || (direction < 0 && tau <= -tau_amp)) {
     direction = -direction;
@@ -285,13 +288,14 @@ void FixGRFLOWShear::check(bool decide)
     await_zero = 1;
     event_step = update->ntimestep;
     event_kind = EVENT_REVERSAL;
+    count.reversal(reversals, now());
     drive_wall();
     if (progress) report();
   }
   if (step_il < 0 && ru >= ru_liq) {
     step_il = update->ntimestep;
-    time_il = update->atime + (update->ntimestep - update->atimestep) * update->dt;
-    reversals_il = reversals;
+    time_il = now();
+    count.liquefied(time_il);
   }
 }
 
@@ -305,9 +309,9 @@ void FixGRFLOWShear::report()
   const double rate = (now > wall_last) ? (update->ntimestep - step_last) / (now - wall_last) : 0.0;
   if (comm->me == 0)
     utils::logmesg(lmp,
-                   "grflow/shear {}: reversal {} cycle {:.2f} step {} gamma {:.6g} tau {:.6g} "
+                   "grflow/shear {}: reversal {} N {:.2f} step {} gamma {:.6g} tau {:.6g} "
                    "r_u {:.4f}{} elapsed {:.1f} s {:.0f} steps/s\n",
-                   id, reversals, 0.5 * reversals, update->ntimestep,
+                   id, reversals, count.n_event, update->ntimestep,
                    wall->wall(FixGRFLOWWall::HI).disp[0] / height(), tau, ru,
                    step_il >= 0 ? " (liquefied)" : "", now - wall_start, rate);
   wall_last = now;
@@ -319,6 +323,15 @@ void FixGRFLOWShear::report()
 double FixGRFLOWShear::height() const
 {
   return wall->wall(FixGRFLOWWall::HI).z - wall->wall(FixGRFLOWWall::LO).z;
+}
+
+/* ----------------------------------------------------------------------
+   simulated time of this step, as thermo keyword time
+------------------------------------------------------------------------- */
+
+double FixGRFLOWShear::now() const
+{
+  return update->atime + (update->ntimestep - update->atimestep) * update->dt;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -333,8 +346,6 @@ void FixGRFLOWShear::reset_dt()
 double FixGRFLOWShear::compute_vector(int n)
 {
   const double xw = wall ? wall->wall(FixGRFLOWWall::HI).disp[0] : 0.0;
-  const double cycles = 0.5 * reversals;
-  const double cycles_il = (step_il >= 0) ? 0.5 * (reversals - reversals_il) : 0.0;
   switch (n) {
     case DIRECTION:
       return direction;
@@ -356,14 +367,16 @@ double FixGRFLOWShear::compute_vector(int n)
       return step_il;
     case TIME_IL:
       return time_il;
-    case CYCLES_IL:
-      return cycles_il;
-    case CYCLES:
-      return cycles;
+    case N_IL:
+      return count.n_il;
+    case N_EVENT:
+      return count.n_event;
     case DONE: {
       int done = 0;
-      if (stop_cycles > 0.0 && cycles >= stop_cycles) done = 1;
-      if (stop_cycles_after_il > 0.0 && step_il >= 0 && cycles_il >= stop_cycles_after_il) done = 1;
+      if (stop_cycles > 0.0 && count.n_event >= stop_cycles) done = 1;
+      if (stop_cycles_after_il > 0.0 && count.n_il >= 0.0 &&
+          count.n_event - count.n_il >= stop_cycles_after_il)
+        done = 1;
       if (stop_gamma > 0.0 && wall && fabs(xw / height()) >= stop_gamma) done = 1;
       return done;
     }
@@ -380,18 +393,24 @@ void FixGRFLOWShear::write_restart(FILE *fp)
   double list[NRESTART] = {(double) started,
                            (double) direction,
                            (double) reversals,
-                           (double) reversals_il,
                            (double) step_il,
                            p0,
                            time_il,
-                           (double) await_zero};
+                           (double) await_zero,
+                           count.n_event,
+                           count.t_event,
+                           (double) count.il,
+                           count.t_il,
+                           count.n_il,
+                           count.n_before_il,
+                           count.t_before_il};
   write_restart_values(lmp, fp, RESTART_VERSION, list, NRESTART);
 }
 
 /* ----------------------------------------------------------------------
-   format 1: the header of grflow_restart.h, then the values of
-   write_restart(); format 0 (files written before the header): the same
-   values without it
+   format 2: the header of grflow_restart.h, then the values of
+   write_restart().  Formats 1 and 0 (before the fractional cycle count)
+   lack the times of the cycle events, so N cannot go on from them.
 ------------------------------------------------------------------------- */
 
 void FixGRFLOWShear::restart(char *buf)
@@ -399,12 +418,24 @@ void FixGRFLOWShear::restart(char *buf)
   int version;
   const double *list = read_restart_values(lmp, fmt::format("Fix grflow/shear {}", id), buf,
                                            RESTART_VERSION, NRESTART, version);
+  if (version < RESTART_VERSION)
+    error->all(FLERR,
+               "Fix grflow/shear {}: restart data of format version {} were written before "
+               "GRFLOW counted fractional cycles and lack the times of the cycle events: continue "
+               "that run with the GRFLOW that wrote it, or start its shear stage again",
+               id, version);
   started = (int) list[0];
   direction = (int) list[1];
   reversals = (bigint) list[2];
-  reversals_il = (bigint) list[3];
-  step_il = (bigint) list[4];
-  p0 = list[5];
-  time_il = list[6];
-  await_zero = (int) list[7];
+  step_il = (bigint) list[3];
+  p0 = list[4];
+  time_il = list[5];
+  await_zero = (int) list[6];
+  count.n_event = list[7];
+  count.t_event = list[8];
+  count.il = list[9] != 0.0;
+  count.t_il = list[10];
+  count.n_il = list[11];
+  count.n_before_il = list[12];
+  count.t_before_il = list[13];
 }

@@ -21,6 +21,7 @@ FixStyle(grflow/shear,FixGRFLOWShear);
 #define LMP_FIX_GRFLOW_SHEAR_H
 
 #include "fix.h"
+#include "grflow_cycle_count.h"
 
 namespace LAMMPS_NS {
 
@@ -41,7 +42,7 @@ class FixGRFLOWShear : public Fix {
   // output vector (0-based)
   // clang-format off
   enum {
-    DIRECTION, REVERSALS, XWALL, GAMMA, TAU, PRESS, RU, P0, STEP_IL, TIME_IL, CYCLES_IL, CYCLES,
+    DIRECTION, REVERSALS, XWALL, GAMMA, TAU, PRESS, RU, P0, STEP_IL, TIME_IL, N_IL, N_EVENT,
     DONE, EVENT, NOUT
   };
   // clang-format on
@@ -59,9 +60,10 @@ class FixGRFLOWShear : public Fix {
 
   // protocol state (restart)
   int started, direction;
-  bigint reversals, reversals_il, step_il;
+  bigint reversals, step_il;
   double p0, time_il;
-  int await_zero;    // a reversal happened, tau has not crossed zero since
+  int await_zero;              // a reversal happened, tau has not crossed zero since
+  GRFLOW::CycleCount count;    // the fractional cycle count N (grflow_cycle_count.h)
 
   // events and progress
   bigint event_step;
@@ -77,6 +79,7 @@ class FixGRFLOWShear : public Fix {
   void report();
   void drive_wall();
   double height() const;
+  double now() const;
 };
 
 }    // namespace LAMMPS_NS
