@@ -5,18 +5,23 @@
 """Library behind ``analysis/make_figures.py``.
 
 The run directory format is that of ``inputs/README.md``: ``prep.json``,
-``series.txt`` (36 named columns), ``snapshots/atoms.*.txt`` (dump custom)
-and ``snapshots/contacts.*.txt`` (dump local).  Everything here is a pure
+``series.txt`` (36 named columns), ``events.txt`` (the cycle events of fix
+grflow/shear), ``snapshots/atoms.*.txt`` (dump custom) and
+``snapshots/contacts.*.txt`` (dump local).  Everything here is a pure
 function of its arguments (no plotting, no printing); rows of the series
 are referred to by their index in the arrays returned by
 :func:`read_series`.
 
 Definitions (section numbers of the paper, paper/isochoric-cyclic-shearing.md):
 
-* fractional cycle count N (inputs/README.md): shear starts at N = 0;
-  reversal k is at N = k/2 - 1/4, the first zero-crossing of tau after it at
-  N = k/2; linear in time in between (see :func:`cycle_count`);
-* initial liquefaction: first row with r_u >= ru_liq, N_IL its N (sec. 3);
+* fractional cycle count N (inputs/README.md; decided by fix grflow/shear,
+  src/GRFLOW/grflow_cycle_count.h): shear starts at N = 0; reversal k is at
+  N = k/2 - 1/4, the first zero-crossing of tau after it at N = k/2; linear
+  in time in between (see :func:`cycle_count`).  The events and N_IL are
+  the fix's (events.txt, :func:`run_events`); :func:`cycle_events` finds
+  them again in the series only for runs written before events.txt;
+* initial liquefaction: the fix's step of the first r_u >= ru_liq (the
+  first row with r_u >= ru_liq for older runs), N_IL its N (sec. 3);
 * liquefaction exit: a row after the onset with r_u < ru_liq whose previous
   row had r_u >= ru_liq (sec. 3: "exits liquefaction state when r_u < 0.99");
 * cycle n runs from N = n to N = n + 1; its states (sec. 3, Fig. 2) are
@@ -114,6 +119,34 @@ def read_series(path):
                           % (path, data.shape[1], len(names)))
     data = _drop_repeated_steps(data, names.index("step"), path)
     return {n: data[:, i].copy() for i, n in enumerate(names)}
+
+
+EVENT_COLUMNS = ("step", "time", "event", "reversals", "N", "N_IL", "step_IL")
+
+
+def read_events(path):
+    """Read ``events.txt`` (inputs/README.md): a dict of arrays keyed by
+    EVENT_COLUMNS.  Raises FileNotFoundError, or FormatError for a file that
+    does not have those 7 columns, a first line other than the start (event
+    0, N = 0), or steps that decrease."""
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            data = np.loadtxt(path, comments="#", ndmin=2, dtype=float)
+    except ValueError:
+        _locate_bad_row(path, len(EVENT_COLUMNS))
+        raise FormatError("%s: unreadable data rows" % path)
+    if data.shape[0] == 0:
+        raise FormatError("%s: no data rows" % path)
+    if data.shape[1] != len(EVENT_COLUMNS):
+        raise FormatError("%s: rows have %d fields, expected %d (%s)"
+                          % (path, data.shape[1], len(EVENT_COLUMNS), " ".join(EVENT_COLUMNS)))
+    ev = {n: data[:, i].copy() for i, n in enumerate(EVENT_COLUMNS)}
+    if ev["event"][0] != 0 or ev["N"][0] != 0:
+        raise FormatError("%s: the first line is not the start of shearing (event 0, N 0)" % path)
+    if np.any(np.diff(ev["step"]) < 0) or not np.all(np.isin(ev["event"][1:], (1, 2))):
+        raise FormatError("%s: steps decrease, or an event kind other than 1 or 2" % path)
+    return ev
 
 
 def _locate_bad_row(path, ncol):
@@ -384,6 +417,61 @@ def cycle_events(series):
             "rows": rows, "N": Ns}
 
 
+def fix_events(table, series):
+    """The events of fix grflow/shear (:func:`read_events`) in the form of
+    :func:`cycle_events`, plus ``time`` (the events' times, for
+    :func:`cycle_count`), ``N_IL`` (the fix's N at initial liquefaction,
+    None if not known) and ``step_IL`` (None before it).  An event's row is
+    the first series row at or after its step.  A zero-crossing seen on the
+    same check as the next reversal is flagged as the reversal only; its
+    row is that reversal's.
+    """
+    step = series["step"]
+    nrow = len(step)
+
+    def row_of(st):
+        r = int(np.searchsorted(step, st, side="left"))
+        return r if r < nrow else None
+
+    kinds, revs = table["event"].astype(int), np.rint(table["reversals"]).astype(int)
+    reversal_rows, crossing_rows = [], {0: row_of(table["step"][0])}
+    for i in range(1, len(kinds)):
+        k = revs[i]
+        if kinds[i] == 1:
+            while len(reversal_rows) < k - 1:      # a reversal on the setup of the
+                reversal_rows.append(None)          # first run (tau >= tau_amp at once)
+                                                    # has no line
+            reversal_rows.append(row_of(table["step"][i]))
+            if k - 1 >= 1 and k - 1 not in crossing_rows:
+                crossing_rows[k - 1] = reversal_rows[-1]
+        else:
+            crossing_rows[k] = row_of(table["step"][i])
+    kmax = len(reversal_rows)
+    for k in range(1, kmax + 1):
+        crossing_rows.setdefault(k, None)
+    rows = [row_of(st) for st in table["step"]]
+    known = table["N_IL"][table["N_IL"] >= 0]
+    st_il = table["step_IL"][table["step_IL"] >= 0]
+    return {"reversal_rows": reversal_rows, "crossing_rows": crossing_rows,
+            "rows": rows, "N": [float(n) for n in table["N"]],
+            "time": [float(t) for t in table["time"]],
+            "N_IL": float(known[-1]) if len(known) else None,
+            "step_IL": int(st_il[-1]) if len(st_il) else None,
+            "source": "fix"}
+
+
+def run_events(run_dir, series):
+    """The cycle events of a run: the fix's (``events.txt``) when the run
+    has them, else found again in the series (:func:`cycle_events`, runs
+    written before events.txt existed; ``source`` says which)."""
+    path = os.path.join(run_dir, "events.txt")
+    if os.path.exists(path):
+        return fix_events(read_events(path), series)
+    ev = cycle_events(series)
+    ev["source"] = "series"
+    return ev
+
+
 def cycle_count(series, events=None):
     """Fractional number of cycles N at every row (inputs/README.md).
 
@@ -399,9 +487,12 @@ def cycle_count(series, events=None):
     if events is None:
         events = cycle_events(series)
     t = series["time"]
-    et = [0.0 if (row == 0 and n == 0.0) else float(t[row])
-          for row, n in zip(events["rows"], events["N"])]
-    en = list(events["N"])
+    if "time" in events:        # the fix's events, at their own times
+        et, en = list(events["time"]), list(events["N"])
+    else:
+        et = [0.0 if (row == 0 and n == 0.0) else float(t[row])
+              for row, n in zip(events["rows"], events["N"])]
+        en = list(events["N"])
     if not et:
         return np.zeros_like(t)
     N = np.interp(t, et, en)
@@ -412,20 +503,28 @@ def cycle_count(series, events=None):
     return N
 
 
-def liquefaction(series, ru_liq=DEFAULT_RU_LIQ):
+def liquefaction(series, ru_liq=DEFAULT_RU_LIQ, events=None):
     """Initial liquefaction and exits.
 
-    Returns a dict: ``onset`` (first row with r_u >= ru_liq, or None),
+    Returns a dict: ``onset`` (the row of the fix's step of initial
+    liquefaction when ``events`` are the fix's, else the first row with
+    r_u >= ru_liq; None if not reached),
     ``exits`` (rows after the onset with r_u < ru_liq whose previous row has
     r_u >= ru_liq) and ``entries`` (rows after the onset with r_u >= ru_liq
     whose previous row has r_u < ru_liq).
     """
     ru = series["r_u"]
     liq = ru >= ru_liq
-    hit = np.nonzero(liq)[0]
-    if not len(hit):
+    if events is not None and events.get("source") == "fix":
+        st = events["step_IL"]
+        onset = None if st is None else int(np.searchsorted(series["step"], st, side="left"))
+        if onset is not None and onset >= len(ru):
+            onset = None
+    else:
+        hit = np.nonzero(liq)[0]
+        onset = int(hit[0]) if len(hit) else None
+    if onset is None:
         return {"onset": None, "exits": [], "entries": []}
-    onset = int(hit[0])
     below = ru < ru_liq
     idx = np.arange(onset + 1, len(ru))
     exits = idx[below[idx] & liq[idx - 1]]
@@ -447,7 +546,7 @@ def find_cycle_states(series, cycle, ru_liq=DEFAULT_RU_LIQ, events=None, liq=Non
     if events is None:
         events = cycle_events(series)
     if liq is None:
-        liq = liquefaction(series, ru_liq)
+        liq = liquefaction(series, ru_liq, events)
     rr, cr = events["reversal_rows"], events["crossing_rows"]
 
     def reversal(k):
@@ -476,7 +575,7 @@ def post_liquefaction_cycles(series, ru_liq=DEFAULT_RU_LIQ, events=None, liq=Non
     if events is None:
         events = cycle_events(series)
     if liq is None:
-        liq = liquefaction(series, ru_liq)
+        liq = liquefaction(series, ru_liq, events)
     if liq["onset"] is None:
         return []
     return [k // 2 for k, row in sorted(events["crossing_rows"].items())
@@ -494,7 +593,7 @@ def choose_cycle(series, ru_liq=DEFAULT_RU_LIQ, index=None, events=None, liq=Non
     if events is None:
         events = cycle_events(series)
     if liq is None:
-        liq = liquefaction(series, ru_liq)
+        liq = liquefaction(series, ru_liq, events)
     if liq["onset"] is None:
         return None, None, "initial liquefaction not reached"
     cycles = post_liquefaction_cycles(series, ru_liq, events, liq)
@@ -795,18 +894,21 @@ def _num(x):
     return x if math.isfinite(x) else None
 
 
-def summary(series, prep=None, cycle_index=None):
+def summary(series, prep=None, cycle_index=None, events=None):
     """Measured values beside the paper's, plus cycle C, as a JSON-ready dict.
 
     ``prep`` is the prep.json dict (None if unavailable); ``cycle_index``
     selects cycle C among the post-liquefaction cycles (default: the first
-    with all six states).  Entries measured as "not reached" (an event that
-    did not happen) or "not available" (missing input) never match.
+    with all six states); ``events`` those of :func:`run_events` (default:
+    found again in the series).  Entries measured as "not reached" (an
+    event that did not happen) or "not available" (missing input) never
+    match.
     """
     ru_liq, tau_amp = protocol(prep)
-    events = cycle_events(series)
+    if events is None:
+        events = cycle_events(series)
     N = cycle_count(series, events)
-    liq = liquefaction(series, ru_liq)
+    liq = liquefaction(series, ru_liq, events)
     zg = series["z_g"]
     prep = prep or {}
 
@@ -839,9 +941,14 @@ def summary(series, prep=None, cycle_index=None):
         ]
     else:
         post = zg[onset:][np.isfinite(zg[onset:])]
+        if events.get("source") == "fix":
+            n_il = events["N_IL"] if events["N_IL"] is not None else NOT_AVAILABLE
+            how = "fix grflow/shear's N_IL"
+        else:
+            n_il, how = float(N[onset]), "N of the onset row"
         entries += [
-            _entry("N_IL", "cycles to initial liquefaction (r_u >= ru_liq)", "-",
-                   float(N[onset])),
+            _entry("N_IL", "cycles to initial liquefaction (r_u >= ru_liq; %s)" % how, "-",
+                   n_il),
             _entry("z_g_at_IL", "z_g at initial liquefaction", "-", _num(zg[onset])),
             _entry("z_g_post_IL_max", "largest z_g after initial liquefaction", "-",
                    float(post.max()) if len(post) else NOT_REACHED),

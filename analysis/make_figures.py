@@ -51,9 +51,9 @@ class Run:
         self.s = series
         self.prep = prep
         self.ru_liq, self.tau_amp = ga.protocol(prep)
-        self.events = ga.cycle_events(series)
+        self.events = ga.run_events(run_dir, series)
         self.N = ga.cycle_count(series, self.events)
-        self.liq = ga.liquefaction(series, self.ru_liq)
+        self.liq = ga.liquefaction(series, self.ru_liq, self.events)
         self.onset = self.liq["onset"]
         self.n, self.states, self.note = ga.choose_cycle(
             series, self.ru_liq, cycle_index, self.events, self.liq)
@@ -426,7 +426,7 @@ def main(argv=None):
     os.makedirs(out, exist_ok=True)
 
     run = Run(run_dir, series, prep, args.cycle)
-    summ = ga.summary(series, prep, args.cycle)
+    summ = ga.summary(series, prep, args.cycle, run.events)
     summ["run_dir"] = os.path.abspath(run_dir)
     with open(os.path.join(out, "summary.json"), "w") as f:
         json.dump(_json_safe(summ), f, indent=1, allow_nan=False)

@@ -28,12 +28,14 @@ KEYS = [("e_prep", "e", "{:.4f}"), ("z_g_prep", "z_g0", "{:.3f}"), ("p_prep", "p
 
 
 def post_il_time(run, ru_liq):
-    """simulated time from the first row with r_u >= ru_liq to the last row"""
+    """simulated time from the row of initial liquefaction (ga.liquefaction)
+    to the last row"""
     try:
         series = ga.read_series(os.path.join(run, "series.txt"))
+        events = ga.run_events(run, series)
     except (OSError, ga.FormatError):
         return None
-    onset = ga.liquefaction(series, ru_liq)["onset"]
+    onset = ga.liquefaction(series, ru_liq, events)["onset"]
     return None if onset is None else float(series["time"][-1] - series["time"][onset])
 
 

@@ -304,6 +304,88 @@ def test_cycle_count_between_samples():
                            "tau": np.array([0, 1.0, 2.0])}).tolist() == [0, 0, 0]
 
 
+# ------------------------------------------------------------ the fix's events
+
+def events_between_rows(tmp_path, lines):
+    """A 13-row series (step 100 i, time i, reversals as the events below
+    say) and events.txt with the given lines, written to tmp_path."""
+    steps = 100.0 * np.arange(13)
+    rev = np.zeros(13)
+    for st, kind, k in [(l[0], l[2], l[3]) for l in lines if l[2] == 1]:
+        rev[steps >= st] = k
+    col = {c: np.zeros(13) for c in ga.SERIES_COLUMNS}
+    col.update(step=steps, time=np.arange(13.0), reversals=rev, r_u=np.full(13, 0.5),
+               z_g=np.full(13, 4.0), p=np.full(13, 5.0e4))
+    write_series(str(tmp_path / "series.txt"), col)
+    with open(tmp_path / "events.txt", "w") as f:
+        f.write("# step time event reversals N N_IL step_IL\n")
+        for l in lines:
+            f.write(" ".join("%.17g" % v for v in l) + "\n")
+    return ga.read_series(str(tmp_path / "series.txt"))
+
+
+# start; reversal 1 at t 2.5; crossing at 4.5; initial liquefaction at
+# step 520 (t 5.2), its N_IL as the fix wrote it once the next event came;
+# reversal 2 at 7.5; crossing at 9.5
+EVENTS = [(0, 0.0, 0, 0, 0.0, -1, -1), (250, 2.5, 1, 1, 0.25, -1, -1),
+          (450, 4.5, 2, 1, 0.5, -1, -1), (750, 7.5, 1, 2, 0.75, 0.5583333333333333, 520),
+          (950, 9.5, 2, 2, 1.0, 0.5583333333333333, 520)]
+
+
+def test_fix_events_are_used_as_written(tmp_path):
+    s = events_between_rows(tmp_path, EVENTS)
+    ev = ga.run_events(str(tmp_path), s)
+    assert ev["source"] == "fix"
+    # an event's row: the first row at or after its step
+    assert ev["reversal_rows"] == [3, 8]
+    assert ev["crossing_rows"] == {0: 0, 1: 5, 2: 10}
+    assert ev["N_IL"] == 0.5583333333333333 and ev["step_IL"] == 520
+    # N between the events at their own times (not at the rows'): by hand
+    N = ga.cycle_count(s, ev)
+    assert N[2] == pytest.approx(0.25 * 2.0 / 2.5, abs=1e-15)
+    assert N[3] == pytest.approx(0.25 + 0.25 * 0.5 / 2.0, abs=1e-15)
+    assert N[9] == pytest.approx(0.75 + 0.25 * 1.5 / 2.0, abs=1e-15)
+    assert N[10] == pytest.approx(1.0 + 0.25 * 0.5 / 2.0, abs=1e-15)   # extrapolated
+    # initial liquefaction: the fix's step (row of step 600), its N_IL as written
+    assert ga.liquefaction(s, 0.99, ev)["onset"] == 6
+    summ = ga.summary(s, None, events=ev)
+    n_il = next(e for e in summ["entries"] if e["name"] == "N_IL")
+    assert n_il["measured"] == 0.5583333333333333 and "fix" in n_il["description"]
+
+
+def test_fix_events_crossing_on_the_reversal_check(tmp_path):
+    """A crossing seen on the same check as the next reversal has no line:
+    its row is the reversal's."""
+    s = events_between_rows(tmp_path, [EVENTS[0], EVENTS[1], (750, 7.5, 1, 2, 0.75, -1, -1)])
+    ev = ga.run_events(str(tmp_path), s)
+    assert ev["reversal_rows"] == [3, 8]
+    assert ev["crossing_rows"] == {0: 0, 1: 8, 2: None}
+    assert ev["N_IL"] is None and ev["step_IL"] is None
+    assert ga.liquefaction(s, 0.99, ev)["onset"] is None
+
+
+def test_events_without_the_file_come_from_the_series(liquefied_run):
+    root = liquefied_run[0]
+    s = ga.read_series(os.path.join(root, "series.txt"))
+    ev = ga.run_events(root, s)
+    assert ev["source"] == "series"
+    assert ev["reversal_rows"] == ga.cycle_events(s)["reversal_rows"]
+
+
+@pytest.mark.parametrize("lines, message", [
+    (["0 0 0 0 0 -1"], "rows have 6 fields"),
+    (["0 0 1 1 0.25 -1 -1"], "not the start"),
+    (["0 0 0 0 0 -1 -1", "500 1 1 1 0.25 -1 -1", "400 2 2 1 0.5 -1 -1"], "steps decrease"),
+    (["0 0 0 0 0 -1 -1", "500 1 3 1 0.25 -1 -1"], "event kind"),
+    (["0 0 0 0 0 -1 -1", "500 1 x 1 0.25 -1 -1"], "non-numeric"),
+])
+def test_read_events_rejects_bad_files(tmp_path, lines, message):
+    path = tmp_path / "events.txt"
+    path.write_text("# step time event reversals N N_IL step_IL\n" + "\n".join(lines) + "\n")
+    with pytest.raises(ga.FormatError, match=message):
+        ga.read_events(str(path))
+
+
 def test_liquefaction_onset_and_exits(liquefied_run):
     root, col, Ns, Nf = liquefied_run
     s = ga.read_series(os.path.join(root, "series.txt"))

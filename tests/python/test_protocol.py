@@ -162,6 +162,52 @@ def test_whole_protocol_reaches_liquefaction(protocol):
     assert glue.count(2.0) == prep["glued_top"] > 0
 
 
+def test_fix_events_agree_with_the_series(protocol):
+    """N has one owner, fix grflow/shear: events.txt holds its events and
+    N_IL, analysis/ takes them from there, and the deck's last message
+    prints the same N_IL.  The analysis's own detection from the series
+    (kept for runs without events.txt) is the independent check: the series
+    is sampled every series_every steps at steps where the fix also checks,
+    so a reversal is first seen on the first row at or after the fix's
+    step, and a zero-crossing or initial liquefaction never on a row before
+    the fix's step."""
+    out, _ = protocol
+    series = ga.read_series(str(out / "series.txt"))
+    table = ga.read_events(str(out / "events.txt"))
+    fix = ga.run_events(str(out), series)
+    own = ga.cycle_events(series)
+    assert fix["source"] == "fix"
+    n_rev = int(series["reversals"][-1])
+    assert n_rev >= 4 and len(fix["reversal_rows"]) == len(own["reversal_rows"]) == n_rev
+    assert fix["reversal_rows"] == own["reversal_rows"]
+    crossings = 0
+    for k, row in own["crossing_rows"].items():
+        if k > 0 and row is not None:
+            assert fix["crossing_rows"][k] is not None and fix["crossing_rows"][k] <= row, k
+            crossings += 1
+    assert crossings >= 3
+    # the counts of the rule: k/2 - 1/4 at reversal k, k/2 at the crossing after it
+    for kind, k, n in zip(table["event"][1:], table["reversals"][1:], table["N"][1:]):
+        assert n == (0.5 * k - 0.25 if kind == 1 else 0.5 * k)
+    # initial liquefaction: the fix's step, N_IL between the events around it
+    ru_liq = json.loads((out / "prep.json").read_text())["ru_liq"]
+    onset_series = ga.liquefaction(series, ru_liq)["onset"]
+    assert fix["step_IL"] is not None and fix["step_IL"] <= series["step"][onset_series]
+    before = table["step"] <= fix["step_IL"]
+    n_a, n_b = table["N"][before][-1], table["N"][~before][0]
+    assert n_a <= fix["N_IL"] <= n_b
+    # done at the first event with N - N_IL >= n_post (1 here)
+    assert table["N"][-1] - fix["N_IL"] >= 1.0 > table["N"][-2] - fix["N_IL"]
+    # one number, written out by the fix, read by the summary and the deck
+    summ = ga.summary(series, json.loads((out / "prep.json").read_text()), events=fix)
+    n_il = next(e["measured"] for e in summ["entries"] if e["name"] == "N_IL")
+    assert n_il == fix["N_IL"]
+    log = (out / "log.shear.lammps").read_text()
+    assert "(N_IL = %.4f)" % n_il in log
+    print(f"[ measured ] N_IL: fix {fix['N_IL']:.4f}, from the series' rows "
+          f"{ga.cycle_count(series, own)[onset_series]:.4f}")
+
+
 def check_snapshots_against_series(out):
     """A step's atoms and contacts snapshots are enough to recompute the
     contact network offline: on every snapshot step that has a series row,
