@@ -204,6 +204,28 @@ TEST(ContactKernel, PairGeometryMatchesSpec)
   }
 }
 
+// wall_geometry(): a flat wall normal to z, sphere of radius 0.8 mm whose
+// centre is 0.7 mm from it: delta = 0.1 mm, arm a - delta/2, the wall a
+// sphere of infinite radius (a' = a), normal +z for a wall below, -z above
+TEST(ContactKernel, WallGeometryMatchesSpec)
+{
+  const double rad = 0.8e-3, gap = 0.7e-3, tol = 1.0e-18;
+  for (double sign : {1.0, -1.0})
+    for (bool full_arm : {false, true}) {
+      ContactGeometry g;
+      wall_geometry(gap, rad, sign, full_arm, g);
+      EXPECT_EQ(g.n[0], 0.0);
+      EXPECT_EQ(g.n[1], 0.0);
+      EXPECT_EQ(g.n[2], sign);
+      EXPECT_NEAR(g.delta, 0.1e-3, tol);
+      EXPECT_NEAR(g.arm_i, 0.75e-3, tol);
+      EXPECT_EQ(g.arm_j, 0.0);
+      EXPECT_NEAR(g.varm_i, full_arm ? 0.8e-3 : 0.75e-3, tol);
+      EXPECT_EQ(g.varm_j, 0.0);
+      EXPECT_EQ(g.reff, rad);
+    }
+}
+
 /* ----------------------------------------------------------------------
    Head-on collision of two spheres (no rotation).
 

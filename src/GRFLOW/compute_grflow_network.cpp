@@ -25,6 +25,8 @@
 
 #include "compute_grflow_network.h"
 
+#include "grflow_contact.h"
+
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
@@ -426,15 +428,16 @@ void ComputeGRFLOWNetwork::sum_pair_contacts(double *sig, double *fab)
       const double n[3] = {del[0] / r, del[1] / r, del[2] / r};
       const double f[3] = {fpair * del[0] + svector[0], fpair * del[1] + svector[1],
                            fpair * del[2] + svector[2]};
-      const double half = 0.5 * (radsum - r);
+      // the contact law's arms a - delta/2 (the kernel's contact_arm)
+      const double delta = radsum - r;
       double arm = 0.0;
       if (use_i) {
         ncontact[i] += 1.0;
-        arm += radius[i] - half;
+        arm += GRFLOW::contact_arm(radius[i], delta);
       }
       if (use_j) {
         ncontact[j] += 1.0;
-        arm += radius[j] - half;
+        arm += GRFLOW::contact_arm(radius[j], delta);
       }
       const double ends = (use_i ? 1.0 : 0.0) + (use_j ? 1.0 : 0.0);
       for (int a = 0; a < 3; a++)

@@ -85,13 +85,7 @@ FixGRFLOWWall::FixGRFLOWWall(LAMMPS *lmp, int narg, char **arg) :
       iarg += 2;
     } else if (kw == "velocity_arm") {
       if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, "fix grflow/wall velocity_arm", error);
-      if (strcmp(arg[iarg + 1], "reduced") == 0)
-        full_arm = 0;
-      else if (strcmp(arg[iarg + 1], "full") == 0)
-        full_arm = 1;
-      else
-        error->all(FLERR, "Unknown fix grflow/wall velocity_arm value {}: expected reduced or full",
-                   arg[iarg + 1]);
+      full_arm = parse_velocity_arm(lmp, "fix grflow/wall", arg[iarg + 1]);
       iarg += 2;
     } else {
       for (const char *name : COEFF_NAMES)
@@ -293,16 +287,8 @@ void FixGRFLOWWall::post_force(int vflag)
         continue;
       }
 
-      // the wall as a sphere of infinite radius: a' = a_i, no spin
       ContactGeometry g;
-      g.n[0] = g.n[1] = 0.0;
-      g.n[2] = sign;
-      g.delta = rad - gap;
-      g.arm_i = rad - 0.5 * g.delta;
-      g.arm_j = 0.0;
-      g.varm_i = full_arm ? rad : g.arm_i;
-      g.varm_j = 0.0;
-      g.reff = rad;
+      wall_geometry(gap, rad, sign, full_arm != 0, g);
       const double vrel[3] = {v[i][0] - w.v[0], v[i][1] - w.v[1], v[i][2] - w.v[2]};
       ContactForces out;
       contact_forces(coeff, g, vrel, omega[i], wzero, dt, update_history, hist, out);

@@ -97,3 +97,13 @@ void GRFLOW::pack_coeffs(const double *value, ContactCoeffs &c)
   c.co = value[CO];
   c.muo = value[MUO];
 }
+
+/* ---------------------------------------------------------------------- */
+
+int GRFLOW::parse_velocity_arm(LAMMPS *lmp, const std::string &cmd, const char *value)
+{
+  if (strcmp(value, "reduced") == 0) return 0;
+  if (strcmp(value, "full") == 0) return 1;
+  lmp->error->all(FLERR, "Unknown {} velocity_arm value {}: expected reduced or full", cmd, value);
+  return 0;
+}

@@ -45,6 +45,10 @@ namespace GRFLOW {
 
   void pack_coeffs(const double *value, ContactCoeffs &c);
 
+  // the value of a velocity_arm keyword: 0 for reduced (a - delta/2), 1
+  // for full (the radii); an error naming cmd otherwise
+  int parse_velocity_arm(LAMMPS *lmp, const std::string &cmd, const char *value);
+
 }    // namespace GRFLOW
 }    // namespace LAMMPS_NS
 

@@ -464,6 +464,16 @@ namespace GRFLOW {
 #endif
 
   /* ----------------------------------------------------------------------
+     the arm of a contact: distance from the centre of a sphere of radius
+     rad to the contact point, the middle of the overlap delta
+  ------------------------------------------------------------------------- */
+
+  static GRFLOW_INLINE double contact_arm(double rad, double delta)
+  {
+    return rad - 0.5 * delta;
+  }
+
+  /* ----------------------------------------------------------------------
      geometry of a sphere-sphere contact from del = x_i - x_j (|del| = r > 0)
      full_arm: use the radii, not a - delta/2, for the contact-point velocity
   ------------------------------------------------------------------------- */
@@ -476,12 +486,31 @@ namespace GRFLOW {
     g.n[1] = del[1] * rinv;
     g.n[2] = del[2] * rinv;
     g.delta = radi + radj - r;
-    const double half = 0.5 * g.delta;
-    g.arm_i = radi - half;
-    g.arm_j = radj - half;
+    g.arm_i = contact_arm(radi, g.delta);
+    g.arm_j = contact_arm(radj, g.delta);
     g.varm_i = full_arm ? radi : g.arm_i;
     g.varm_j = full_arm ? radj : g.arm_j;
     g.reff = radi * radj / (radi + radj);
+  }
+
+  /* ----------------------------------------------------------------------
+     geometry of a sphere-wall contact: a flat wall normal to z on the side
+     sign (+1: the wall is below, n = +z; -1: above, n = -z), the sphere's
+     centre at gap = sign (z - z_wall) from it, gap < rad.  The wall is a
+     sphere of infinite radius: a' = a_i, and it does not spin (arm_j = 0).
+  ------------------------------------------------------------------------- */
+
+  static GRFLOW_INLINE void wall_geometry(double gap, double rad, double sign, bool full_arm,
+                                          ContactGeometry &g)
+  {
+    g.n[0] = g.n[1] = 0.0;
+    g.n[2] = sign;
+    g.delta = rad - gap;
+    g.arm_i = contact_arm(rad, g.delta);
+    g.arm_j = 0.0;
+    g.varm_i = full_arm ? rad : g.arm_i;
+    g.varm_j = 0.0;
+    g.reff = rad;
   }
 
   /* ----------------------------------------------------------------------

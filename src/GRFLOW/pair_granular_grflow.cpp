@@ -150,15 +150,7 @@ void PairGranularGRFLOW::settings(int narg, char **arg)
     if (strcmp(arg[iarg], "velocity_arm") == 0) {
       if (iarg + 2 > narg)
         utils::missing_cmd_args(FLERR, "pair_style granular/grflow velocity_arm", error);
-      if (strcmp(arg[iarg + 1], "reduced") == 0)
-        full_arm = 0;
-      else if (strcmp(arg[iarg + 1], "full") == 0)
-        full_arm = 1;
-      else
-        error->all(
-            FLERR,
-            "Unknown pair_style granular/grflow velocity_arm value {}: expected reduced or full",
-            arg[iarg + 1]);
+      full_arm = GRFLOW::parse_velocity_arm(lmp, "pair_style granular/grflow", arg[iarg + 1]);
       iarg += 2;
     } else {
       error->all(FLERR, "Unknown pair_style granular/grflow keyword: {}", arg[iarg]);
