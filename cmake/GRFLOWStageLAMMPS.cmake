@@ -13,17 +13,38 @@
 #      GRFLOW_OPENMP_DIR (our src/OPENMP)
 # Out: GRFLOW_STAGED_LAMMPS (staged tree root)
 
-function(grflow_stage_lammps)
-  set(orig ${LAMMPS_SOURCE_DIR})
-  set(stage ${CMAKE_BINARY_DIR}/lammps-staged)
+# A LAMMPS source tree of a version GRFLOW supports, or a fatal error.  The
+# one place that lists the supported versions.
+function(grflow_check_lammps_tree orig)
   if(NOT EXISTS ${orig}/src/version.h OR NOT EXISTS ${orig}/cmake/CMakeLists.txt)
-    message(FATAL_ERROR "LAMMPS_SOURCE_DIR=${orig} is not a LAMMPS source tree "
+    message(FATAL_ERROR "${orig} is not a LAMMPS source tree "
       "(no src/version.h or cmake/CMakeLists.txt)")
   endif()
   file(STRINGS ${orig}/src/version.h lmp_version REGEX "LAMMPS_VERSION")
   if(NOT lmp_version MATCHES "4 Feb 2025|4 Jul 2026")
     message(FATAL_ERROR "GRFLOW supports LAMMPS 4Feb2025 and 4Jul2026; ${orig} has: ${lmp_version}")
   endif()
+endfunction()
+
+# The text of a LAMMPS cmake/CMakeLists.txt with GRFLOW in its list of
+# standard packages (so that -D PKG_GRFLOW=on exists); unchanged if it is
+# there already.
+function(grflow_register_cmake_package cml out)
+  if(cml MATCHES "set\\(STANDARD_PACKAGES\n[^)]*  GRFLOW\n")
+    set(${out} "${cml}" PARENT_SCOPE)
+    return()
+  endif()
+  string(REPLACE "set(STANDARD_PACKAGES\n" "set(STANDARD_PACKAGES\n  GRFLOW\n" patched "${cml}")
+  if(patched STREQUAL cml)
+    message(FATAL_ERROR "could not find the list STANDARD_PACKAGES in a LAMMPS cmake/CMakeLists.txt")
+  endif()
+  set(${out} "${patched}" PARENT_SCOPE)
+endfunction()
+
+function(grflow_stage_lammps)
+  set(orig ${LAMMPS_SOURCE_DIR})
+  set(stage ${CMAKE_BINARY_DIR}/lammps-staged)
+  grflow_check_lammps_tree(${orig})
   if(EXISTS ${orig}/src/GRFLOW)
     message(FATAL_ERROR "${orig}/src already has a GRFLOW folder; pass a clean LAMMPS tree")
   endif()
@@ -74,10 +95,7 @@ function(grflow_stage_lammps)
   # copy cmake/ and register GRFLOW as a standard package (idempotent)
   file(COPY ${orig}/cmake DESTINATION ${stage} REGEX "/cmake/CMakeLists\\.txt$" EXCLUDE)
   file(READ ${orig}/cmake/CMakeLists.txt cml)
-  string(REPLACE "set(STANDARD_PACKAGES\n" "set(STANDARD_PACKAGES\n  GRFLOW\n" cml_patched "${cml}")
-  if(cml_patched STREQUAL cml)
-    message(FATAL_ERROR "could not add GRFLOW to STANDARD_PACKAGES in ${orig}/cmake/CMakeLists.txt")
-  endif()
+  grflow_register_cmake_package("${cml}" cml_patched)
   file(WRITE ${stage}/cmake/CMakeLists.txt.new "${cml_patched}")
   file(COPY_FILE ${stage}/cmake/CMakeLists.txt.new ${stage}/cmake/CMakeLists.txt ONLY_IF_DIFFERENT)
   file(REMOVE ${stage}/cmake/CMakeLists.txt.new)
