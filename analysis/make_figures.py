@@ -55,6 +55,14 @@ class Run:
         self.N = ga.cycle_count(series, self.events)
         self.liq = ga.liquefaction(series, self.ru_liq, self.events)
         self.onset = self.liq["onset"]
+        # N_IL: the fix's (events.txt), or N of the onset row for older runs;
+        # None if not reached, or not known (no cycle event after it)
+        if self.onset is None:
+            self.n_il = None
+        elif self.events.get("source") == "fix":
+            self.n_il = self.events["N_IL"]
+        else:
+            self.n_il = float(self.N[self.onset])
         self.n, self.states, self.note = ga.choose_cycle(
             series, self.ru_liq, cycle_index, self.events, self.liq)
         self.crange = (ga.cycle_rows(series, self.n, self.events)
@@ -106,6 +114,16 @@ def _mark_states(ax, run, x, y, size=50, annotate=True):
                         xytext=(5, 5), fontsize=9, zorder=6)
 
 
+def _finish(fig, path, keep, **save):
+    """Save the figure; return its path, or with keep the Figure itself
+    (left open, for tests that look at what it shows)."""
+    fig.savefig(path, dpi=130, **save)
+    if keep:
+        return fig
+    plt.close(fig)
+    return path
+
+
 def _not_reached(ax, text, y=0.5):
     ax.text(0.5, y, text, transform=ax.transAxes, ha="center", va="center",
             fontsize=11, color="tab:red",
@@ -146,7 +164,7 @@ def _side_view(ax, snap, stripes, walls, title):
     ax.set_title(title, fontsize=10)
 
 
-def fig1(run, out, snapshot_step=None):
+def fig1(run, out, snapshot_step=None, keep=False):
     """Side views (x-z) of the sample at the end of preparation and during shear."""
     prep_path = os.path.join(run.dir, "snapshots", "atoms.prep.txt")
     shear = ga.list_snapshots(run.dir, "atoms")
@@ -201,15 +219,12 @@ def fig1(run, out, snapshot_step=None):
     fig.tight_layout()
     fig.legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, 0.0), ncol=3,
                frameon=False, fontsize=9)
-    path = os.path.join(out, "fig1_snapshots.png")
-    fig.savefig(path, dpi=130, bbox_inches="tight")
-    plt.close(fig)
-    return path
+    return _finish(fig, os.path.join(out, "fig1_snapshots.png"), keep, bbox_inches="tight")
 
 
 # ---------------------------------------------------------------- Fig. 2
 
-def fig2(run, out):
+def fig2(run, out, keep=False):
     """(a) stress path tau-p, (b) stress-strain tau-gamma."""
     s, k = run.s, run.stride
     tau, p, gam = s["tau"] / 1e3, s["p"] / 1e3, 100 * s["gamma"]
@@ -238,15 +253,12 @@ def fig2(run, out):
     axes[0].set_title("(a) stress path")
     axes[1].set_title("(b) stress-strain curve")
     fig.tight_layout()
-    path = os.path.join(out, "fig2_macro.png")
-    fig.savefig(path, dpi=130)
-    plt.close(fig)
-    return path
+    return _finish(fig, os.path.join(out, "fig2_macro.png"), keep)
 
 
 # ---------------------------------------------------------------- Fig. 3
 
-def fig3(run, out):
+def fig3(run, out, keep=False):
     """z_g against N coloured by r_u, with N_IL, z_g = 3.6 and an inset on cycle C."""
     s, k, N = run.s, run.stride, run.N
     zg, ru = s["z_g"], s["r_u"]
@@ -258,9 +270,11 @@ def fig3(run, out):
         lo, hi = ax.get_ylim()
         ax.set_ylim(lo, hi + 0.75 * (hi - lo))
     ax.axhline(ZG_EXIT, color="k", ls="--", lw=1, label="$z_g$ = 3.6")
-    if run.onset is not None:
-        ax.axvline(N[run.onset], color="k", ls="--", lw=1, dashes=(6, 3),
-                   label="$N_{IL}$ = %.3g" % N[run.onset])
+    if run.n_il is not None:
+        ax.axvline(run.n_il, color="k", ls="--", lw=1, dashes=(6, 3),
+                   label="$N_{IL}$ = %.2f" % run.n_il)
+    elif run.onset is not None:
+        _not_reached(ax, "$N_{IL}$ not known: no cycle event after initial liquefaction", 0.1)
     else:
         _not_reached(ax, "$N_{IL}$ not reached ($r_u$ < %g throughout)" % run.ru_liq, 0.1)
     ax.set_xlabel("N (cycles)")
@@ -283,15 +297,12 @@ def fig3(run, out):
         _not_reached(ax, "cycle C: " + run.note, 0.9)
     ax.legend(loc="upper left", fontsize=9)
     fig.tight_layout()
-    path = os.path.join(out, "fig3_zg.png")
-    fig.savefig(path, dpi=130)
-    plt.close(fig)
-    return path
+    return _finish(fig, os.path.join(out, "fig3_zg.png"), keep)
 
 
 # ---------------------------------------------------------------- Fig. 4
 
-def fig4(run, out):
+def fig4(run, out, keep=False):
     """P_c at the six states of cycle C, grouped bars: (a) over all the
     particles of the sub-volume, as the paper's Fig. 4, and (b) over the
     particles with at least one contact (P_c / (1 - P_0)), where the
@@ -336,15 +347,12 @@ def fig4(run, out):
             _not_reached(ax, "%d of 6 states not found in this cycle"
                          % (len(ga.STATES) - found), 0.55)
     fig.tight_layout()
-    path = os.path.join(out, "fig4_pc.png")
-    fig.savefig(path, dpi=130)
-    plt.close(fig)
-    return path
+    return _finish(fig, os.path.join(out, "fig4_pc.png"), keep)
 
 
 # ---------------------------------------------------------------- Fig. 5
 
-def fig5(run, out):
+def fig5(run, out, keep=False):
     """a_c against z_g over the whole run, cycle C highlighted."""
     s, k, N = run.s, run.stride, run.N
     zg, ac = s["z_g"], s["a_c"]
@@ -366,10 +374,7 @@ def fig5(run, out):
     ax.set_title("Fig. 5: fabric anisotropy against coordination number")
     ax.legend(loc="upper right", fontsize=8)
     fig.tight_layout()
-    path = os.path.join(out, "fig5_ac_zg.png")
-    fig.savefig(path, dpi=130)
-    plt.close(fig)
-    return path
+    return _finish(fig, os.path.join(out, "fig5_ac_zg.png"), keep)
 
 
 # ---------------------------------------------------------------- main

@@ -590,6 +590,110 @@ def test_command_liquefied(liquefied_run, tmp_path, capsys):
     assert os.path.isfile(os.path.join(out2, "fig4_pc.png"))
 
 
+# ------------------------------------------------------------ what the figures show
+
+def _run(root):
+    s = ga.read_series(os.path.join(root, "series.txt"))
+    prep = ga.read_prep(os.path.join(root, "prep.json"))
+    return make_figures.Run(root, s, prep, None)
+
+
+def _hlines(ax):
+    return sorted({float(l.get_ydata()[0]) for l in ax.get_lines()
+                   if len(set(l.get_ydata())) == 1 and len(set(l.get_xdata())) == 2})
+
+
+def _vlines(ax):
+    return sorted({float(l.get_xdata()[0]) for l in ax.get_lines()
+                   if len(set(l.get_xdata())) == 1 and len(set(l.get_ydata())) == 2})
+
+
+def _state_marks(ax):
+    """label -> (x, y) of the states' markers on an axes"""
+    out = {}
+    for c in ax.collections:
+        if c.get_label() in make_figures.LABEL.values():
+            out[c.get_label()] = tuple(c.get_offsets()[0])
+    return out
+
+
+def test_figures_show_what_they_claim(liquefied_run, tmp_path):
+    """Each figure of the synthetic liquefied run (N_IL = 4.4, cycle C = 6,
+    tau_amp = 25 kPa) draws the quantities its axes name, the reference
+    lines, and the six states of cycle C where they are."""
+    root = liquefied_run[0]
+    run = _run(root)
+    out = str(tmp_path)
+    s = run.s
+    rows = run.states
+    assert run.n == 6 and all(r is not None for r in rows.values())
+    labels = {make_figures.LABEL[st]: r for st, r in rows.items()}
+    try:
+        # Fig. 2: tau against p and gamma, the amplitude lines, cycle C and its states
+        fig = make_figures.fig2(run, out, keep=True)
+        for ax, x in zip(fig.axes[:2], (s["p"] / 1e3, 100 * s["gamma"])):
+            names = [l.get_label() for l in ax.get_lines()]
+            assert {"pre-liquefaction", "post-liquefaction", "cycle C (N = 6-7)"} <= set(names)
+            assert _hlines(ax) == [-25.0, 25.0]
+            marks = _state_marks(ax)
+            assert set(marks) == set(labels)
+            for lab, r in labels.items():
+                assert marks[lab] == pytest.approx((x[r], s["tau"][r] / 1e3), abs=1e-12)
+        assert fig.axes[0].get_xlabel() == "p (kPa)"
+        assert fig.axes[1].get_xlabel() == r"$\gamma$ (%)"
+        # Fig. 3: z_g(N), z_g = 3.6, N_IL = 4.4, the inset on cycle C with its states
+        fig = make_figures.fig3(run, out, keep=True)
+        ax = fig.axes[0]
+        assert (ax.get_xlabel(), ax.get_ylabel()) == ("N (cycles)", "$z_g$")
+        assert 3.6 in _hlines(ax)
+        assert _vlines(ax) == [pytest.approx(4.4, abs=1e-12)]
+        segs = ax.collections[0].get_segments()
+        assert len(segs) > 0.9 * len(s["z_g"])            # the whole run, as a coloured line
+        inset = ax.child_axes[0]
+        marks = _state_marks(inset)
+        assert set(marks) == set(labels)
+        for lab, r in labels.items():
+            assert marks[lab] == pytest.approx((run.N[r], s["z_g"][r]), abs=1e-12)
+        # Fig. 4: P_c at the six states, over all particles and over those with contacts
+        fig = make_figures.fig4(run, out, keep=True)
+        for k, ax in enumerate(fig.axes[:2]):
+            assert len(ax.containers) == 6
+            for bars, st in zip(ax.containers, ga.STATES):
+                pc = ga.connectivity(s, rows[st])
+                # (b): among the particles with contacts, none has c = 0
+                want = pc if k == 0 else np.concatenate([[0.0], pc[1:] / (1.0 - pc[0])])
+                assert [b.get_height() for b in bars] == pytest.approx(list(want), abs=1e-12)
+        # Fig. 5: a_c against z_g, z_g = 3.6, cycle C and its states
+        fig = make_figures.fig5(run, out, keep=True)
+        ax = fig.axes[0]
+        assert (ax.get_xlabel(), ax.get_ylabel()) == ("$z_g$", "$a_c$")
+        assert _vlines(ax) == [3.6]
+        marks = _state_marks(ax)
+        for lab, r in labels.items():
+            assert marks[lab] == pytest.approx((s["z_g"][r], s["a_c"][r]), abs=1e-12)
+        # Fig. 1: both side views, every particle of the snapshots drawn
+        fig = make_figures.fig1(run, out, keep=True)
+        for ax in fig.axes[:2]:
+            assert (ax.get_xlabel(), ax.get_ylabel()) == ("x (mm)", "z (mm)")
+            assert len(ax.collections[0].get_offsets()) == 300
+    finally:
+        make_figures.plt.close("all")
+
+
+def test_figures_of_a_run_that_never_liquefied(dry_run, tmp_path):
+    run = _run(dry_run[0])
+    try:
+        fig = make_figures.fig3(run, str(tmp_path), keep=True)
+        ax = fig.axes[0]
+        assert _vlines(ax) == []                      # no N_IL line
+        assert any("not reached" in t.get_text() for t in ax.texts)
+        fig = make_figures.fig4(run, str(tmp_path), keep=True)
+        assert all(len(a.containers) == 0 for a in fig.axes[:2])
+        assert any("cycle C not found" in t.get_text() for t in fig.axes[0].texts)
+    finally:
+        make_figures.plt.close("all")
+
+
 def test_command_never_liquefied_default_out(dry_run, capsys):
     root = dry_run[0]
     assert make_figures.main([root]) == 0
