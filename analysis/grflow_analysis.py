@@ -107,13 +107,7 @@ def read_series(path):
     missing = [c for c in REQUIRED_COLUMNS if c not in names]
     if missing:
         raise FormatError("%s: missing column(s) %s" % (path, ", ".join(missing)))
-    try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            data = np.loadtxt(path, comments="#", ndmin=2, dtype=float)
-    except ValueError:
-        _locate_bad_row(path, len(names))
-        raise FormatError("%s: unreadable data rows" % path)
+    data = _load_rows(path, len(names))
     if data.shape[1] != len(names):
         raise FormatError("%s: rows have %d fields, %d columns are named"
                           % (path, data.shape[1], len(names)))
@@ -129,13 +123,7 @@ def read_events(path):
     EVENT_COLUMNS.  Raises FileNotFoundError, or FormatError for a file that
     does not have those 7 columns, a first line other than the start (event
     0, N = 0), or steps that decrease."""
-    try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            data = np.loadtxt(path, comments="#", ndmin=2, dtype=float)
-    except ValueError:
-        _locate_bad_row(path, len(EVENT_COLUMNS))
-        raise FormatError("%s: unreadable data rows" % path)
+    data = _load_rows(path, len(EVENT_COLUMNS))
     if data.shape[0] == 0:
         raise FormatError("%s: no data rows" % path)
     if data.shape[1] != len(EVENT_COLUMNS):
@@ -147,6 +135,18 @@ def read_events(path):
     if np.any(np.diff(ev["step"]) < 0) or not np.all(np.isin(ev["event"][1:], (1, 2))):
         raise FormatError("%s: steps decrease, or an event kind other than 1 or 2" % path)
     return ev
+
+
+def _load_rows(path, ncol):
+    """The numeric rows of a whitespace table with '#' comments, as a 2-d
+    array; FormatError naming the first bad line (ncol fields expected)."""
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            return np.loadtxt(path, comments="#", ndmin=2, dtype=float)
+    except ValueError:
+        _locate_bad_row(path, ncol)
+        raise FormatError("%s: unreadable data rows" % path)
 
 
 def _locate_bad_row(path, ncol):
