@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# e and z_g after the preparation stage at N = 500 over seeds 1-6, three
+# ways (the quick preset; mu_prep 0.0407 without and with the agitation
+# stage): the scatter behind the thresholds of tests/python/test_protocol.py
+# (bench/README.md, "Scatter of the small preparation").  Lines "name seed e
+# z_g p" on stdout; 2 runs at a time.
+#   bash bench/prep_scatter.sh [OUT_DIR]     (default runs/escatter; LMP: build/lmp)
+set -euo pipefail
+top=$(cd "$(dirname "$0")/.." && pwd)
+export OUT=${1:-$top/runs/escatter} LMP=${LMP:-$top/build/lmp} TOP=$top
+mkdir -p "$OUT"
+job() { # name seed [lmp args]
+  local name=$1 seed=$2
+  shift 2
+  local out=$OUT/$name-s$seed
+  "$LMP" -nocite -echo none -log none -screen none -in "$TOP/inputs/cyclic_shear.lmp" \
+    -var inputs "$TOP/inputs" -var outdir "$out" -var preset quick -var N 500 -var stage prep \
+    -var seed "$seed" "$@"
+  /usr/bin/python3 -c "import json; d = json.load(open('$out/prep.json')); print('$name', $seed, d['e'], d['z_g'], d['p'])"
+}
+export -f job
+for s in 1 2 3 4 5 6; do
+  echo "small $s"
+  echo "plain $s -var mu_prep 0.0407 -var agitate_dilation 1.0 -var mu_rec 0.25"
+  echo "agitated $s -var mu_prep 0.0407 -var agitate_dilation 1.003 -var mu_rec 0.25"
+done | xargs -P 2 -L 1 bash -c 'job "$@"' _
