@@ -259,6 +259,13 @@ TEST(Compress, OvershootDampingSurvivesSplitRuns)
   // target while the end-of-step ones all fall on one side.  Damping that
   // counted only end-of-step updates never triggered here (checked: factor
   // 1 after 1200 runs, and the servo did not converge).
+  // Known weakness: this depends on the trajectory.  With the cell's sizes
+  // of seed 4321 it triggers after about 1160 runs (so does seed 2;
+  // seed 1 after 2986; seeds 3-7 are still far from the target at step
+  // 150000, sigma_zz 15 of 100 kPa for seed 3, and never trigger), and a
+  // round-off change in compute grflow/network once moved it past 1200.
+  // A set-up that overshoots by construction would make it a test of the
+  // rule alone.
 
   Lammps lmp;
   cell(lmp);
@@ -356,7 +363,9 @@ TEST(Compress, ReadsRestartWithoutDampingState)
   // must give the same rates, gain factors 1, and the compression of a
   // run that never stopped (at gain 5 the damping never triggers).  (This
   // replaces a committed binary file whose replay of a 160005-step
-  // trajectory broke with any change of compiler or libm.)
+  // trajectory broke with any change of compiler or libm.)  Where the
+  // legacy values land is checked with values written for the purpose
+  // (three distinct rates), so that no state of the trajectory matters.
   const std::string file = workfile("compress_now.restart");
   const std::string legacy = workfile("compress_legacy.restart");
   std::vector<double> ref_start, ref, got_start, got;
@@ -379,13 +388,31 @@ TEST(Compress, ReadsRestartWithoutDampingState)
   double values[16];
   memcpy(values, &bytes[at], sizeof(values));
   ASSERT_EQ(values[6], 3.0);    // RESTART_V2 + started
+  // the file with the block replaced by 4 legacy values
+  auto legacy_file = [&](const double *old_values, const std::string &name) {
+    const int old_size = 4 * sizeof(double);
+    std::string b = bytes.substr(0, at - sizeof(int));
+    b.append((const char *) &old_size, sizeof(int));
+    b.append((const char *) old_values, old_size);
+    b.append(bytes.substr(at + sizeof(values)));
+    std::ofstream(name, std::ios::binary) << b;
+  };
   const double old_values[4] = {values[3], values[4], values[5], 1.0};
-  const int old_size = sizeof(old_values);
-  std::string b = bytes.substr(0, at - sizeof(int));
-  b.append((const char *) &old_size, sizeof(int));
-  b.append((const char *) old_values, sizeof(old_values));
-  b.append(bytes.substr(at + sizeof(values)));
-  std::ofstream(legacy, std::ios::binary) << b;
+  legacy_file(old_values, legacy);
+
+  // the legacy values land where they belong: the rates x y z, bit for bit
+  {
+    const std::string marked = workfile("compress_legacy_marked.restart");
+    const double marked_values[4] = {0.11 * RATE, -0.23 * RATE, 0.37 * RATE, 1.0};
+    legacy_file(marked_values, marked);
+    Lammps lmp;
+    resume_cell(lmp, marked);
+    const auto c = comp(lmp);
+    EXPECT_EQ(c[RATE_X], marked_values[0]);
+    EXPECT_EQ(c[RATE_Y], marked_values[1]);
+    EXPECT_EQ(c[RATE_Z], marked_values[2]);
+    for (int k : {FACTOR_X, FACTOR_Y, FACTOR_Z}) EXPECT_EQ(c[k], 1.0) << "entry " << k;
+  }
 
   {
     Lammps lmp;
@@ -399,13 +426,7 @@ TEST(Compress, ReadsRestartWithoutDampingState)
     EXPECT_EQ(got_start[k], 1.0) << "entry " << k;
     EXPECT_EQ(got[k], 1.0) << "entry " << k;
   }
-  // the legacy values land where they belong: the rates, bit for bit
   for (int k : {RATE_X, RATE_Y, RATE_Z}) EXPECT_EQ(got_start[k], ref_start[k]) << "entry " << k;
-  // the file holds the servo at work: rates below their cap rate_max
-  for (int k : {RATE_X, RATE_Y, RATE_Z}) {
-    EXPECT_NE(got_start[k], 0.0) << "entry " << k;
-    EXPECT_LT(fabs(got_start[k]), 0.9 * RATE) << "entry " << k;
-  }
   // restarted neighbor lists sum in another order: round-off only (as in
   // RestartContinuesTheServo)
   for (int k : {SXX, SYY, SZZ, RATE_X, RATE_Z, VOLUME, HEIGHT}) {
