@@ -4,7 +4,7 @@
 # a time, each the whole protocol (the preparation does not depend on v_x,
 # so each pair shares its sample to the last bit) with its figures and
 # summary; then one table (bench/README.md, "The wall speed at N = 1000").
-#   bash bench/vx_quick.sh [OUT_DIR]   (default runs/vx; LMP: build/lmp; VX: the speeds, default "0.025 0.05")
+#   bash bench/vx_quick.sh [OUT_DIR]   (default runs/vx; LMP: build/lmp; VX: the speeds, default "0.025 0.05"; SEEDS: default "1 2 3")
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 export OUT=${1:-$top/runs/vx} LMP=${LMP:-$top/build/lmp} TOP=$top
@@ -18,7 +18,7 @@ job() { # seed v_x
   /usr/bin/python3 "$TOP/analysis/make_figures.py" "$out" > "$out.figs.log" 2>&1
 }
 export -f job
-for s in 1 2 3; do for v in ${VX:-0.025 0.05}; do echo "$s $v"; done; done |
+for s in ${SEEDS:-1 2 3}; do for v in ${VX:-0.025 0.05}; do echo "$s $v"; done; done |
   xargs -P 2 -L 1 bash -c 'job "$@"' _
 /usr/bin/python3 - "$OUT" <<'PY'
 import json, os, sys
