@@ -206,7 +206,7 @@ inline std::string workfile(const std::string &name)
 }
 
 // The GRFLOW restart block that holds count values (the wall fix 14, the
-// compress fix 13, the shear fix 14) of format version (any if 0) in the
+// compress fix 13, the shear fix 13) of format version (any if 0) in the
 // bytes of a restart file: its offset (at its tag; then version, count,
 // values), npos if there is none or more than one.
 inline size_t grflow_block(const std::string &bytes, double count, double version = 0.0)

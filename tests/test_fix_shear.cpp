@@ -548,10 +548,10 @@ TEST_F(Shear, DamagedRestartData)
     lmp.cmds({shear_cmd(p), "run 100 post no", "write_restart " + file});
   }
   const std::string nan_file =
-      damaged_restart(file, 14.0, 4, std::numeric_limits<double>::quiet_NaN(), "shear_nan.restart",
-                      2.0);    // (the wall fix's block holds 14 values too, format 1)
-  const std::string v99_file = damaged_restart(file, 14.0, 1, 99.0, "shear_v99.restart", 2.0);
-  const std::string v1_file = damaged_restart(file, 14.0, 1, 1.0, "shear_v1.restart", 2.0);
+      damaged_restart(file, 13.0, 4, std::numeric_limits<double>::quiet_NaN(), "shear_nan.restart",
+                      2.0);    // (fix grflow/compress's block holds 13 values too, format 1)
+  const std::string v99_file = damaged_restart(file, 13.0, 1, 99.0, "shear_v99.restart", 2.0);
+  const std::string v1_file = damaged_restart(file, 13.0, 1, 1.0, "shear_v1.restart", 2.0);
   ASSERT_NE(nan_file, "");
   ASSERT_NE(v1_file, "");
   auto setup = [p](const std::string &restart) -> std::vector<std::string> {
@@ -568,7 +568,7 @@ TEST_F(Shear, DamagedRestartData)
   EXPECT_NE(msg.find("Fix grflow/shear sh: restart data of format version 99"), std::string::npos)
       << msg;
   msg = first_error(setup(nan_file));
-  EXPECT_NE(msg.find("Fix grflow/shear sh: restart value 2 of 14 is nan"), std::string::npos)
+  EXPECT_NE(msg.find("Fix grflow/shear sh: restart value 2 of 13 is nan"), std::string::npos)
       << msg;
   // format 1 (before the fractional cycle count) cannot go on
   msg = first_error(setup(v1_file));

@@ -47,7 +47,7 @@ using namespace FixConst;
 using GRFLOW::read_restart_values;
 using GRFLOW::write_restart_values;
 
-static constexpr int NRESTART = 14;
+static constexpr int NRESTART = 13;
 static constexpr int RESTART_VERSION = 2;
 enum { NO_EVENT, EVENT_REVERSAL, EVENT_ZERO };
 
@@ -132,7 +132,6 @@ FixGRFLOWShear::FixGRFLOWShear(LAMMPS *lmp, int narg, char **arg) :
   reversals = 0;
   step_il = -1;
   p0 = 0.0;
-  time_il = -1.0;
   await_zero = 0;
   event_step = -1;
   event_kind = NO_EVENT;
@@ -197,7 +196,7 @@ void FixGRFLOWShear::setup(int /*vflag*/)
                  p0);
     started = 1;
     direction = 1;
-    count.start(now());
+    count.start(sim_time());
   }
   // r_u at this step with this p0 (the compute may have been invoked with
   // another p0 of its own, its p0 keyword, just above or earlier)
@@ -280,7 +279,7 @@ void FixGRFLOWShear::check(bool decide)
     await_zero = 0;
     event_step = update->ntimestep;
     event_kind = EVENT_ZERO;
-    count.crossing(reversals, now());
+    count.crossing(reversals, sim_time());
   }
   if ((direction > 0 && tau >= tau_amp) || (direction < 0 && tau <= -tau_amp)) {
     direction = -direction;
@@ -288,14 +287,13 @@ void FixGRFLOWShear::check(bool decide)
     await_zero = 1;
     event_step = update->ntimestep;
     event_kind = EVENT_REVERSAL;
-    count.reversal(reversals, now());
+    count.reversal(reversals, sim_time());
     drive_wall();
     if (progress) report();
   }
   if (step_il < 0 && ru >= ru_liq) {
     step_il = update->ntimestep;
-    time_il = now();
-    count.liquefied(time_il);
+    count.liquefied(sim_time());
   }
 }
 
@@ -329,7 +327,7 @@ double FixGRFLOWShear::height() const
    simulated time of this step, as thermo keyword time
 ------------------------------------------------------------------------- */
 
-double FixGRFLOWShear::now() const
+double FixGRFLOWShear::sim_time() const
 {
   return update->atime + (update->ntimestep - update->atimestep) * update->dt;
 }
@@ -366,7 +364,7 @@ double FixGRFLOWShear::compute_vector(int n)
     case STEP_IL:
       return step_il;
     case TIME_IL:
-      return time_il;
+      return count.il ? count.t_il : -1.0;
     case N_IL:
       return count.n_il;
     case N_EVENT:
@@ -390,20 +388,10 @@ double FixGRFLOWShear::compute_vector(int n)
 
 void FixGRFLOWShear::write_restart(FILE *fp)
 {
-  double list[NRESTART] = {(double) started,
-                           (double) direction,
-                           (double) reversals,
-                           (double) step_il,
-                           p0,
-                           time_il,
-                           (double) await_zero,
-                           count.n_event,
-                           count.t_event,
-                           (double) count.il,
-                           count.t_il,
-                           count.n_il,
-                           count.n_before_il,
-                           count.t_before_il};
+  double list[NRESTART] = {
+      (double) started,    (double) direction, (double) reversals, (double) step_il,  p0,
+      (double) await_zero, count.n_event,      count.t_event,      (double) count.il, count.t_il,
+      count.n_il,          count.n_before_il,  count.t_before_il};
   write_restart_values(lmp, fp, RESTART_VERSION, list, NRESTART);
 }
 
@@ -429,13 +417,12 @@ void FixGRFLOWShear::restart(char *buf)
   reversals = (bigint) list[2];
   step_il = (bigint) list[3];
   p0 = list[4];
-  time_il = list[5];
-  await_zero = (int) list[6];
-  count.n_event = list[7];
-  count.t_event = list[8];
-  count.il = list[9] != 0.0;
-  count.t_il = list[10];
-  count.n_il = list[11];
-  count.n_before_il = list[12];
-  count.t_before_il = list[13];
+  await_zero = (int) list[5];
+  count.n_event = list[6];
+  count.t_event = list[7];
+  count.il = list[8] != 0.0;
+  count.t_il = list[9];
+  count.n_il = list[10];
+  count.n_before_il = list[11];
+  count.t_before_il = list[12];
 }

@@ -61,9 +61,9 @@ class FixGRFLOWShear : public Fix {
   // protocol state (restart)
   int started, direction;
   bigint reversals, step_il;
-  double p0, time_il;
+  double p0;
   int await_zero;              // a reversal happened, tau has not crossed zero since
-  GRFLOW::CycleCount count;    // the fractional cycle count N (grflow_cycle_count.h)
+  GRFLOW::CycleCount count;    // N, and the time of initial liquefaction (grflow_cycle_count.h)
 
   // events and progress
   bigint event_step;
@@ -79,7 +79,7 @@ class FixGRFLOWShear : public Fix {
   void report();
   void drive_wall();
   double height() const;
-  double now() const;
+  double sim_time() const;
 };
 
 }    // namespace LAMMPS_NS
