@@ -438,9 +438,10 @@ def fix_events(table, series):
     for i in range(1, len(kinds)):
         k = revs[i]
         if kinds[i] == 1:
-            while len(reversal_rows) < k - 1:      # a reversal on the setup of the
-                reversal_rows.append(None)          # first run (tau >= tau_amp at once)
-                                                    # has no line
+            # a reversal on the setup of the first run (tau >= tau_amp at
+            # once) has no line: its row is unknown
+            while len(reversal_rows) < k - 1:
+                reversal_rows.append(None)
             reversal_rows.append(row_of(table["step"][i]))
             if k - 1 >= 1 and k - 1 not in crossing_rows:
                 crossing_rows[k - 1] = reversal_rows[-1]
@@ -470,6 +471,17 @@ def run_events(run_dir, series):
     ev = cycle_events(series)
     ev["source"] = "series"
     return ev
+
+
+def liquefaction_n(events, N, onset):
+    """N_IL and how it was made: fix grflow/shear's (None if not known: no
+    cycle event after initial liquefaction) when ``events`` are the fix's,
+    else N of the onset row (older runs); (None, None) if not reached."""
+    if onset is None:
+        return None, None
+    if events.get("source") == "fix":
+        return events["N_IL"], "fix grflow/shear's N_IL"
+    return float(N[onset]), "N of the onset row"
 
 
 def cycle_count(series, events=None):
@@ -941,14 +953,10 @@ def summary(series, prep=None, cycle_index=None, events=None):
         ]
     else:
         post = zg[onset:][np.isfinite(zg[onset:])]
-        if events.get("source") == "fix":
-            n_il = events["N_IL"] if events["N_IL"] is not None else NOT_AVAILABLE
-            how = "fix grflow/shear's N_IL"
-        else:
-            n_il, how = float(N[onset]), "N of the onset row"
+        n_il, how = liquefaction_n(events, N, onset)
         entries += [
             _entry("N_IL", "cycles to initial liquefaction (r_u >= ru_liq; %s)" % how, "-",
-                   n_il),
+                   n_il if n_il is not None else NOT_AVAILABLE),
             _entry("z_g_at_IL", "z_g at initial liquefaction", "-", _num(zg[onset])),
             _entry("z_g_post_IL_max", "largest z_g after initial liquefaction", "-",
                    float(post.max()) if len(post) else NOT_REACHED),

@@ -55,14 +55,7 @@ class Run:
         self.N = ga.cycle_count(series, self.events)
         self.liq = ga.liquefaction(series, self.ru_liq, self.events)
         self.onset = self.liq["onset"]
-        # N_IL: the fix's (events.txt), or N of the onset row for older runs;
-        # None if not reached, or not known (no cycle event after it)
-        if self.onset is None:
-            self.n_il = None
-        elif self.events.get("source") == "fix":
-            self.n_il = self.events["N_IL"]
-        else:
-            self.n_il = float(self.N[self.onset])
+        self.n_il = ga.liquefaction_n(self.events, self.N, self.onset)[0]
         self.n, self.states, self.note = ga.choose_cycle(
             series, self.ru_liq, cycle_index, self.events, self.liq)
         self.crange = (ga.cycle_rows(series, self.n, self.events)
