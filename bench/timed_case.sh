@@ -18,7 +18,9 @@
 # shear.restart.* file and its time; the killed segment counts up to that
 # time (minus its pauses before it), since the steps after it are made
 # again.  A segment killed with its wrapper, that nothing resumed, is not
-# counted.  Environment: BUILD (default build/).
+# counted.  Environment: BUILD (default build/); MPIARGS, extra mpirun
+# arguments for NP > 1 (logged in segments.txt), e.g.
+#   MPIARGS="--mca btl_vader_single_copy_mechanism none"
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 cmd=${1:?usage: timed_case.sh init|run|pause|cont|total DIR ...}
@@ -46,12 +48,13 @@ case "$cmd" in
       last=$(ls -t "$dir"/shear.restart.* 2> /dev/null | head -n 1 || true)
       [ -n "$last" ] && echo "restartfile $(stat -c %Y "$last") $(date -Is -r "$last") $(basename "$last")" >> "$dir/segments.txt"
     fi
-    log start "np $np cpus $cpus args: $*"
+    log start "np $np cpus $cpus${MPIARGS:+ mpirun args: $MPIARGS} args: $*"
     rc=0
     if [ "$np" = 1 ]; then
       taskset -c "$cpus" "$dir/bin/lmp" "${lmpargs[@]}" > "$dir/screen.$(date +%s).txt" 2>&1 || rc=$?
     else
-      mpirun --allow-run-as-root --oversubscribe -np "$np" \
+      # shellcheck disable=SC2086
+      mpirun --allow-run-as-root --oversubscribe -np "$np" ${MPIARGS:-} \
         -x LD_LIBRARY_PATH -x OMP_NUM_THREADS "$dir/bin/lmp" "${lmpargs[@]}" \
         > "$dir/screen.$(date +%s).txt" 2>&1 || rc=$?
     fi
