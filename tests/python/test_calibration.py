@@ -1,187 +1,210 @@
-"""inputs/calibrate_mu_prep.py on a small case (the quick preset, 200 spheres).
+"""-var calibrate yes: the decks find the preparation friction themselves
+(inputs/calibrate.lmp).
 
-1. From the bracket [0, 0.3] it finds a mu_prep whose preparation, as the
-   deck wrote it to prep.json, has e within the tolerance of 0.647; it
-   prints e against mu_prep and writes the same table to calibration.txt.
-2. --try with the value found ends after that one run, with the same e
-   (the preparation is deterministic).
-3. A --try value above the target replaces --hi, which is not run.
-4. Bad arguments stop with a message.
-5. The search logic on a stand-in for lmp that writes prep.json with a
-   given e(mu_prep): exact on a linear e, stops when the bracket shrinks
-   below the 5 decimals, when tries are not monotonic, and when a
-   preparation fails, each with its exit status.
+1. The real decks on a small case (the quick preset, 300 spheres): the
+   accepted trial is within e_tol of e_target; prep.json, calibration.txt
+   and log.prep.lammps agree on every trial; the accepted friction given
+   as a number reproduces the same preparation (the trials are plain
+   preparations).
+2. The search rule of calibrate.lmp with a stand-in prepare.lmp whose e is
+   a given function of mu_prep (every other deck is the real one): each
+   trial follows from the ones before it by the rule the deck documents,
+   recomputed here; the two ways to fail (no trial within e_tol after
+   calib_max trials; the next trial equal to the last one) stop with an
+   error and remove prep.restart and prep.json.
+3. Bad settings stop before any atom is made.
 
 Environment: LMP (lmp binary), GRFLOW_INPUTS (the inputs/ directory).
 """
 
 import json
 import os
-import re
-import stat
-import subprocess
-import sys
+import shutil
 
 import pytest
 
-from lmprun import LMP
+from lmprun import run_lmp
 
-INPUTS = os.environ.get("GRFLOW_INPUTS",
-                        os.path.join(os.path.dirname(__file__), "..", "..", "inputs"))
-SCRIPT = os.path.join(INPUTS, "calibrate_mu_prep.py")
-SMALL = ["--N", "200", "--preset", "quick", "--lmp", LMP]
-TARGET, TOL = 0.647, 0.005
-LINE = re.compile(r"^mu_prep = ([0-9.]+)\s+e = ([0-9.]+)$")
+INPUTS = os.path.abspath(os.environ.get(
+    "GRFLOW_INPUTS", os.path.join(os.path.dirname(__file__), "..", "..", "inputs")))
 
 
-def script(workdir, args, env=None, timeout=600):
-    """Run the script; return the process and its printed (mu_prep, e) lines."""
-    proc = subprocess.run([sys.executable, SCRIPT, "--workdir", str(workdir)] + list(args),
-                          capture_output=True, text=True, timeout=timeout, env=env)
-    printed = [tuple(float(v) for v in m.groups())
-               for m in map(LINE.match, proc.stdout.splitlines()) if m]
-    return proc, printed
+def deck(outdir, *vars_, inputs=INPUTS, check=True, timeout=900):
+    args = ["-in", os.path.join(inputs, "cyclic_shear.lmp"), "-var", "inputs", inputs,
+            "-var", "outdir", str(outdir), "-var", "stage", "prep"]
+    for i in range(0, len(vars_), 2):
+        args += ["-var", vars_[i], str(vars_[i + 1])]
+    return run_lmp(args, outdir.parent, check=check, timeout=timeout)
 
 
-def calibrate(workdir, *extra, check=True):
-    proc, printed = script(workdir, SMALL + list(extra))
-    if check:
-        assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
-    return proc, printed
+def trials(outdir):
+    """calibration.txt as (trial, mu_prep, e) rows"""
+    rows = []
+    for line in (outdir / "calibration.txt").read_text().splitlines():
+        if line.startswith("#"):
+            continue
+        k, mu, e = line.split()[:3]
+        rows.append((int(k), float(mu), float(e)))
+    return rows
 
 
-def prep_e(workdir, mu):
-    """e of a trial as the deck wrote it"""
-    path = workdir / f"mu_{mu:.5f}" / "prep.json"
-    return json.loads(path.read_text())["e"]
+# ---- 1. the real decks ---------------------------------------------------------
 
-
-def found(proc):
-    m = re.search(r"found mu_prep = ([0-9.]+) \(e = ([0-9.]+)\)", proc.stdout)
-    assert m, proc.stdout
-    return float(m.group(1))
+SMALL = ("preset", "quick", "N", 300)
 
 
 @pytest.fixture(scope="module")
-def search(tmp_path_factory):
-    work = tmp_path_factory.mktemp("calibration")
-    proc, printed = calibrate(work, "--lo", "0", "--hi", "0.3", "--max-runs", "8")
-    return work, proc, printed
+def calibrated(tmp_path_factory):
+    out = tmp_path_factory.mktemp("calibrated") / "run"
+    proc = deck(out, *SMALL, "calibrate", "yes")
+    return out, proc
 
 
-def test_finds_the_target_void_ratio(search):
-    work, proc, printed = search
-    print(f"[ measured ] N = 200 quick: {printed}")
-    mu = found(proc)
-    assert abs(prep_e(work, mu) - TARGET) <= TOL
-    # the bracket ends come first and bracket the target
-    assert printed[0][0] == 0.0 and printed[1][0] == 0.3
-    assert prep_e(work, 0.0) < TARGET < prep_e(work, 0.3)
-    # every printed e is the deck's, to the printed digits, and the table
-    # holds the same runs
-    for m, e in printed:
-        assert e == pytest.approx(prep_e(work, m), abs=5.1e-5)
-    rows = [tuple(map(float, l.split())) for l in
-            (work / "calibration.txt").read_text().splitlines() if not l.startswith("#")]
-    assert [r[0] for r in rows] == sorted(m for m, _ in printed)
-    for m, e in rows:
-        assert e == pytest.approx(prep_e(work, m), abs=1e-6)
-    # a search, not a scan: fewer runs than the limit, only the last within
-    # the tolerance
-    assert len(printed) < 8
-    assert all(abs(prep_e(work, m) - TARGET) > TOL for m, _ in printed[:-1])
+def test_accepts_a_trial_within_the_tolerance(calibrated):
+    out, proc = calibrated
+    rows = trials(out)
+    prep = json.loads((out / "prep.json").read_text())
+    assert rows and [k for k, _, _ in rows] == list(range(1, len(rows) + 1))
+    k, mu, e = rows[-1]
+    assert abs(e - 0.647) <= 0.005                   # the defaults e_target, e_tol
+    assert all(abs(e - 0.647) > 0.005 for _, _, e in rows[:-1])    # it stops at the first
+    assert prep["mu_prep"] == pytest.approx(mu, abs=0)
+    assert prep["e"] == pytest.approx(e, abs=5e-9)   # the table's 8 decimals
+    assert rows[0][1] == 0.15                        # mu_prep of the quick preset
+    # every trial is in log.prep.lammps, appended in order
+    log = (out / "log.prep.lammps").read_text()
+    tried = [line.split("mu_prep = ")[1].strip() for line in log.splitlines()
+             if line.startswith("GRFLOW prep:") and "compressing" in line]
+    assert [float(m) for m in tried] == [m for _, m, _ in rows]
+    assert f"mu_prep = {mu:.5f} gives e = {e:.5f}" in proc.stdout
+    assert (out / "prep.restart").exists()
 
 
-def test_try_within_tolerance_ends_at_once(search, tmp_path):
-    work, proc, _ = search
-    mu = found(proc)
-    again, printed = calibrate(tmp_path, "--try", repr(mu))
-    assert found(again) == mu
-    assert len(printed) == 1
-    assert prep_e(tmp_path, mu) == prep_e(work, mu)
+def test_accepted_friction_reproduces_the_preparation(calibrated, tmp_path):
+    out, _ = calibrated
+    mu = json.loads((out / "prep.json").read_text())["mu_prep"]
+    again = tmp_path / "again"
+    deck(again, *SMALL, "mu_prep", f"{mu:.5f}")
+    a = json.loads((out / "prep.json").read_text())
+    b = json.loads((again / "prep.json").read_text())
+    for key in ("e", "z_g", "p", "Lx", "h", "step"):
+        assert a[key] == b[key], key
+    assert not (again / "calibration.txt").exists()
 
 
-def test_a_try_replaces_a_bracket_end(search, tmp_path):
-    """--hi 1 but --try 0.3 (above the target): 1 is never run, and the
-    search goes on from [0, 0.3] as the first one did."""
-    work, proc, printed = search
-    assert prep_e(work, 0.3) > TARGET + TOL    # so 0.3 does not end it
-    again, runs = calibrate(tmp_path, "--lo", "0", "--hi", "1", "--try", "0.3",
-                            "--max-runs", "8")
-    assert runs[0][0] == 0.3 and all(m != 1.0 for m, _ in runs)
-    assert sorted(runs) == sorted(printed)
-    assert found(again) == found(proc)
+# ---- 2. the search rule, with a stand-in preparation ---------------------------
 
-
-@pytest.mark.parametrize("args,expect", [
-    (["--lo", "0.3", "--hi", "0.1"], "need 0 <= --lo < --hi"),
-    (["--tol", "0"], "--tol must be > 0"),
-    (["--try", "0.5", "--hi", "0.3"], "--try values must lie in"),
-])
-def test_bad_arguments(tmp_path, args, expect):
-    proc, printed = calibrate(tmp_path, *args, check=False)
-    assert proc.returncode != 0 and not printed
-    assert expect in proc.stderr
-
-
-FAKE = """#!/usr/bin/python3
-import json, os, sys
-a = sys.argv
-var = {a[i + 1]: a[i + 2] for i in range(len(a) - 2) if a[i] == "-var"}
-mu = float(var["mu_prep"])
-if mu == float(os.environ.get("FAKE_FAIL", "-1")):
-    sys.exit(1)
-os.makedirs(var["outdir"], exist_ok=True)
-with open(os.path.join(var["outdir"], "prep.json"), "w") as f:
-    json.dump({"e": eval(os.environ["FAKE_E"])}, f)
+FAKE_PREP = """# stand-in for prepare.lmp: e is a given function of mu_prep
+log             ${outdir}/log.prep.lammps ${prep_log_append}
+print           "GRFLOW prep: 0 spheres, compressing with mu_prep = ${mu_prep}"
+variable        mu equal ${mu_prep}
+variable        e equal $(%s)
+variable        net_zg equal 4.0
+variable        net_p equal 1.0e5
+variable        prep_steps equal 0
+print           "{}" file ${outdir}/prep.json screen no
+print           "" file ${outdir}/prep.restart screen no
 """
 
 
-def fake(tmp_path, e_of_mu, *args, fail=None):
-    """calibrate_mu_prep.py with a stand-in lmp whose e is e_of_mu (a Python
-    expression in mu)"""
-    exe = tmp_path / "fake_lmp"
-    exe.write_text(FAKE)
-    exe.chmod(exe.stat().st_mode | stat.S_IXUSR)
-    env = dict(os.environ, FAKE_E=e_of_mu, FAKE_FAIL=str(-1 if fail is None else fail))
-    return script(tmp_path / "w", ["--lmp", str(exe)] + list(args), env=env, timeout=120)
+def fake(tmp_path, e_of_mu, *vars_):
+    """the decks with prepare.lmp replaced: e = e_of_mu (a LAMMPS formula in v_mu)"""
+    inputs = tmp_path / "inputs"
+    shutil.copytree(INPUTS, inputs)
+    (inputs / "prepare.lmp").write_text(FAKE_PREP % e_of_mu)
+    out = tmp_path / "out"
+    proc = deck(out, "calibrate", "yes", *vars_, inputs=str(inputs), check=False, timeout=120)
+    return out, proc
 
 
-def test_search_logic_linear(tmp_path):
-    # e = 0.6 + 0.5 mu: regula falsi lands on mu = 0.094 at once
-    proc, printed = fake(tmp_path, "0.6 + 0.5 * mu")
-    assert proc.returncode == 0
-    assert [m for m, _ in printed] == [0.0, 0.3, 0.094]
-    assert "found mu_prep = 0.09400" in proc.stdout
+def expected_next(rows, target, slope0):
+    """the rule of calibrate.lmp: the next friction after the trials rows"""
+    lo = [(m, e) for _, m, e in rows if e < target]
+    hi = [(m, e) for _, m, e in rows if e > target]
+    mu, e = rows[-1][1], rows[-1][2]
+    if lo and hi:
+        # the latest trial on each side is the bracket's end
+        (ml, el), (mh, eh) = lo[-1], hi[-1]
+        a, b = min(ml, mh) + 0.1 * abs(mh - ml), max(ml, mh) - 0.1 * abs(mh - ml)
+        x = ml + (target - el) * (mh - ml) / (eh - el)
+        return min(max(x, a), b)
+    slope = slope0
+    if len(rows) >= 2:
+        secant = (e - rows[-2][2]) / (mu - rows[-2][1])
+        if secant > 0:
+            slope = secant
+    return min(1.0, max(0.0, mu + (target - e) / slope))
 
 
-def test_search_logic_step_shrinks_bracket(tmp_path):
-    # a jump across the tolerance band at 0.1234567: bisection down to 1e-5
-    proc, printed = fake(tmp_path, "0.6 if mu < 0.1234567 else 0.7", "--max-runs", "40")
-    assert proc.returncode == 1
-    assert "narrower than the 5 decimals" in proc.stdout
-    lo = max(m for m, e in printed if e < 0.647)
-    hi = min(m for m, e in printed if e > 0.647)
-    assert lo < 0.1234567 <= hi and round(hi - lo, 5) <= 1e-5
-    assert len(printed) == len(set(printed)) < 40
+def check_rule(rows, target=0.647, slope0=0.6):
+    for n in range(1, len(rows)):
+        assert rows[n][1] == pytest.approx(expected_next(rows[:n], target, slope0), abs=5e-6), n
 
 
-def test_search_logic_tries_not_monotonic(tmp_path):
-    # e falls with mu: the try below the target lies above the one above it
-    proc, printed = fake(tmp_path, "0.75 - mu", "--try", "0.2", "0.01")
-    assert proc.returncode == 2
-    assert "not bracketed" in proc.stdout
-    assert [m for m, _ in printed] == [0.2, 0.01]
+def test_rule_linear(tmp_path):
+    # e = 0.6 + 0.5 mu, first trial 0.3, first slope 0.6 (wrong on purpose):
+    # 0.3 -> 0.12833 by the slope, then the secant is exact: 0.094
+    out, proc = fake(tmp_path, "0.6+0.5*v_mu", "mu_prep", 0.3)
+    assert proc.returncode == 0, proc.stdout[-3000:]
+    rows = trials(out)
+    assert [m for _, m, _ in rows] == [0.3, 0.12833, 0.094]
+    check_rule(rows)
 
 
-def test_search_logic_failed_preparation(tmp_path):
-    proc, printed = fake(tmp_path, "0.6 + 0.5 * mu", fail=0.3)
-    assert proc.returncode == 3
-    assert "preparation failed for mu_prep = 0.3" in proc.stderr
-    assert [m for m, _ in printed] == [0.0]
+def test_rule_bracket_never_reaches(tmp_path):
+    # e jumps across the band 0.647 +- 0.005 at mu = 0.1234: no trial can be
+    # accepted; after the bracket forms, regula falsi stays in its middle 80%
+    out, proc = fake(tmp_path, "ternary(v_mu<0.1234,0.6,0.7)+0.01*v_mu",
+                     "calib_max", 7)
+    assert proc.returncode != 0
+    assert "no trial within e_tol = 0.005 of e_target = 0.647 in calib_max = 7 trials" \
+        in proc.stdout
+    rows = trials(out)
+    assert len(rows) == 7
+    check_rule(rows)
+    assert not (out / "prep.restart").exists() and not (out / "prep.json").exists()
 
 
-def test_max_runs_must_hold_the_tries(tmp_path):
-    proc, printed = fake(tmp_path, "0.6 + 0.5 * mu", "--try", "0.1", "0.2", "--max-runs", "3")
-    assert proc.returncode == 2 and not printed
-    assert "leaves no room for 2 tries" in proc.stderr
+def test_rule_target_out_of_reach(tmp_path):
+    # e >= 0.7 at any friction: the slope leads to mu = 0, then 0 again
+    out, proc = fake(tmp_path, "0.7+0.1*v_mu")
+    assert proc.returncode != 0
+    assert "the next trial would be the same friction" in proc.stdout
+    assert "e_target 0.647 cannot be reached" in proc.stdout
+    rows = trials(out)
+    assert [m for _, m, _ in rows] == [0.095, 0.0]
+    check_rule(rows)
+    assert not (out / "prep.restart").exists() and not (out / "prep.json").exists()
+
+
+def test_rule_noisy_secant_falls_back_to_the_slope(tmp_path):
+    # e rises as the friction falls between the first two trials (noise):
+    # the secant is negative, so the third trial uses e_slope (from -var) again
+    out, proc = fake(tmp_path, "ternary(v_mu>0.09,0.70,ternary(v_mu>0.01,0.72,0.645))",
+                     "e_slope", 0.8)
+    assert proc.returncode == 0, proc.stdout[-3000:]
+    rows = trials(out)
+    assert [m for _, m, _ in rows] == [0.095, 0.02875, 0.0]
+    check_rule(rows, slope0=0.8)
+
+
+# ---- 3. bad settings ----------------------------------------------------------------
+
+@pytest.mark.parametrize("name,value,expect", [
+    ("mu_prep", -0.1, "ERROR: mu_prep -0.1 must be >= 0"),
+    ("calibrate", "maybe", "ERROR: calibrate maybe: use yes or no"),
+    ("mu_prep", 1.5, "ERROR: calibrate yes: mu_prep 1.5, the first trial, must be between 0 and 1"),
+    ("e_tol", 0, "ERROR: e_target 0.647, e_tol 0, e_slope 0.6: each must be > 0"),
+    ("e_slope", -1, "e_slope -1: each must be > 0"),
+    ("calib_max", 2.5, "ERROR: calib_max 2.5 must be a whole number >= 1"),
+    ("calib_max", 0, "ERROR: calib_max 0 must be a whole number >= 1"),
+])
+def test_bad_settings(tmp_path, name, value, expect):
+    # the first two without calibrate yes
+    extra = () if "calibrate yes" not in expect and name in ("mu_prep", "calibrate") \
+        else ("calibrate", "yes")
+    out = tmp_path / "out"
+    proc = deck(out, *SMALL, *extra, name, value, check=False)
+    assert proc.returncode != 0
+    assert expect in proc.stdout
+    assert not (out / "calibration.txt").exists() and not (out / "prep.json").exists()
