@@ -61,12 +61,6 @@ static constexpr int NRESTART = 13;
 static constexpr int RESTART_V2 = 2;
 static constexpr int RESTART_VERSION = 1;    // of the headed block (grflow_restart.h)
 
-// overshoot damping: after NOVERSHOOT updates in a row, each of which
-// overshoots the target by more than half the previous error, an axis's
-// gain is halved, down to FACTOR_MIN
-static constexpr int NOVERSHOOT = 4;
-static constexpr double FACTOR_MIN = 1.0 / 1024.0;
-
 /* ---------------------------------------------------------------------- */
 
 FixGRFLOWCompress::FixGRFLOWCompress(LAMMPS *lmp, int narg, char **arg) :
@@ -154,11 +148,7 @@ FixGRFLOWCompress::FixGRFLOWCompress(LAMMPS *lmp, int narg, char **arg) :
     pe = modify->add_compute(fmt::format("{} all pe", id_pe));
   }
 
-  for (int a = 0; a < 3; a++) {
-    rate[a] = sigma[a] = err_last[a] = 0.0;
-    factor[a] = 1.0;
-    novershoot[a] = 0;
-  }
+  for (int a = 0; a < 3; a++) { rate[a] = sigma[a] = 0.0; }
   errmax = ke = eel = 0.0;
   vsolid = 0.0;
   started = 0;
@@ -259,7 +249,7 @@ void FixGRFLOWCompress::servo()
   for (int a = 0; a < 3; a++) {
     const double err = (sigma[a] - p_target) / p_target;
     damp_overshoot(a, err);
-    rate[a] = rate_max * MAX(-1.0, MIN(1.0, factor[a] * gain * err));
+    rate[a] = rate_max * MAX(-1.0, MIN(1.0, damping[a].factor * gain * err));
   }
   drive_walls();
 }
@@ -317,37 +307,22 @@ void FixGRFLOWCompress::measure()
 }
 
 /* ----------------------------------------------------------------------
-   a proportional servo updated every N steps overshoots the target when
-   the stress responds to one interval's motion by more than the error
-   (for the walls, whose contacts answer before the packing does, this
-   comes with a stiff sample, a wide gap or a large rate_max * gain * N dt);
-   at twice the error it locks into a cycle of two updates that never
-   converges.  Halve the gain of an axis after NOVERSHOOT updates in a
-   row that each land on the other side of the target with more than half
-   the previous error (and beyond tol).  A servo that converges without
-   overshooting, or whose overshoots shrink by more than half each time,
-   does not trigger this.
-   Every update counts, also the one a run makes at its start on a servo
-   step: it re-measures the stresses (the dashpots then see the full-step
+   the overshoot damping (grflow_overshoot.h) of axis a.  Every update
+   counts, also the one a run makes at its start on a servo step: it
+   re-measures the stresses (the dashpots then see the full-step
    velocities) and sets the rates, and in runs of one servo interval these
    setup updates are what alternates.
 ------------------------------------------------------------------------- */
 
 void FixGRFLOWCompress::damp_overshoot(int a, double err)
 {
-  const bool overshoot =
-      fabs(err) > tol && err * err_last[a] < 0.0 && fabs(err) > 0.5 * fabs(err_last[a]);
-  novershoot[a] = overshoot ? novershoot[a] + 1 : 0;
-  err_last[a] = err;
-  if (novershoot[a] < NOVERSHOOT) return;
-  novershoot[a] = 0;
-  if (factor[a] <= FACTOR_MIN) return;
-  factor[a] *= 0.5;
+  if (!damping[a].update(err, tol)) return;
   if (comm->me == 0)
     error->warning(FLERR,
                    "Fix {} grflow/compress: sigma_{}{} overshot the target {} servo updates in "
                    "a row at step {}; its gain factor is halved to {}",
-                   id, "xyz"[a], "xyz"[a], NOVERSHOOT, update -> ntimestep, factor[a]);
+                   id, "xyz"[a], "xyz"[a], GRFLOW::OvershootDamping::NOVERSHOOT,
+                   update -> ntimestep, damping[a].factor);
 }
 
 /* ----------------------------------------------------------------------
@@ -434,7 +409,7 @@ double FixGRFLOWCompress::compute_vector(int n)
     case FACTOR_X:
     case FACTOR_Y:
     case FACTOR_Z:
-      return factor[n - FACTOR_X];
+      return damping[n - FACTOR_X].factor;
   }
   return 0.0;
 }
@@ -445,9 +420,9 @@ void FixGRFLOWCompress::write_restart(FILE *fp)
 {
   double list[NRESTART] = {rate[0], rate[1], rate[2], (double) (RESTART_V2 + started)};
   for (int a = 0; a < 3; a++) {
-    list[4 + a] = factor[a];
-    list[7 + a] = err_last[a];
-    list[10 + a] = (double) novershoot[a];
+    list[4 + a] = damping[a].factor;
+    list[7 + a] = damping[a].err_last;
+    list[10 + a] = (double) damping[a].count;
   }
   write_restart_values(lmp, fp, RESTART_VERSION, list, NRESTART);
 }
@@ -471,8 +446,8 @@ void FixGRFLOWCompress::restart(char *buf)
   started = flag % RESTART_V2;
   if (flag < RESTART_V2) return;    // older file: no damping state, keep factors 1
   for (int a = 0; a < 3; a++) {
-    factor[a] = list[4 + a];
-    err_last[a] = list[7 + a];
-    novershoot[a] = (int) list[10 + a];
+    damping[a].factor = list[4 + a];
+    damping[a].err_last = list[7 + a];
+    damping[a].count = (int) list[10 + a];
   }
 }

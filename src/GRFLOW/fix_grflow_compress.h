@@ -21,6 +21,7 @@ FixStyle(grflow/compress,FixGRFLOWCompress);
 #define LMP_FIX_GRFLOW_COMPRESS_H
 
 #include "fix.h"
+#include "grflow_overshoot.h"
 
 namespace LAMMPS_NS {
 
@@ -63,8 +64,7 @@ class FixGRFLOWCompress : public Fix {
 
   // overshoot damping (restart): per axis the gain factor, the error of
   // the last update and the number of undamped overshoots in a row
-  double factor[3], err_last[3];
-  int novershoot[3];
+  GRFLOW::OvershootDamping damping[3];    // one per axis
 
   // outputs, measured on the last servo step or at setup
   double sigma[3], errmax, ke, eel;
