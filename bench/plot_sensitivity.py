@@ -1,0 +1,125 @@
+#!/usr/bin/env python3
+# GRFLOW - one figure of the sensitivity runs (issue 16).
+# Copyright the GRFLOW developers; GNU General Public License version 2.
+"""What moves the liquefaction exits' z_g and N_IL: the wall speed v_x, the
+shear stage's time step factor and the rolling/torsion arm, each changed
+alone, from the runs' figures/summary.json as analysis/make_figures.py
+wrote them (this script only draws; every number is the summary's).
+
+    /usr/bin/python3 bench/plot_sensitivity.py [--out PNG] [--runs DIR]
+
+DIR (default runs/) holds the run directories of bench/vx_quick.sh (vx/),
+bench/timestep_study.sh (dtq10/, dtq10b/), bench/variants_quick.sh (arm/),
+and the paper-size runs case03/ (v_x = 0.01 m/s) and vx005/ (0.005 m/s,
+same preparation and time step); a missing run is left out of its panel.
+"""
+
+import argparse
+import json
+import os
+import re
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+PAPER_EXIT = 3.6
+SEED_MARK = {"1": "o", "2": "s", "3": "^", "5827": "D"}
+
+
+def summary(path):
+    """the summary's measured values by name, None if the run has none"""
+    f = os.path.join(path, "figures", "summary.json")
+    if not os.path.isfile(f):
+        return None
+    with open(f) as fh:
+        return {e["name"]: e["measured"] for e in json.load(fh)["entries"]}
+
+
+def number(v):
+    return v if isinstance(v, (int, float)) else None
+
+
+def runs_matching(folder, pattern):
+    """(groups, summary) of the run directories in folder whose names match"""
+    out = []
+    if not os.path.isdir(folder):
+        return out
+    for name in sorted(os.listdir(folder)):
+        m = re.fullmatch(pattern, name)
+        s = summary(os.path.join(folder, name)) if m else None
+        if s is not None:
+            out.append((m.groups(), s))
+    return out
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--runs", default="runs")
+    ap.add_argument("--out", default="doc/figures/sensitivity.png")
+    a = ap.parse_args()
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4.6))
+
+    # (a) wall speed
+    ax = axes[0]
+    for (seed, vx), s in runs_matching(os.path.join(a.runs, "vx"), r"s(\d+)_v([0-9.]+)"):
+        z = number(s.get("z_g_exit_mean"))
+        if z is not None:
+            ax.plot(float(vx), z, SEED_MARK.get(seed, "x"), color="C0", mfc="none",
+                    label="N = 1000, seed " + seed)
+    for name, vx in (("case03", 0.01), ("vx005", 0.005)):
+        s = summary(os.path.join(a.runs, name))
+        if s is not None and number(s.get("z_g_exit_mean")) is not None:
+            ax.errorbar(vx, s["z_g_exit_mean"], yerr=s.get("z_g_exit_std") or 0.0, fmt="*",
+                        color="C3", ms=11, capsize=3,
+                        label="N = 8000, seed 5827 (%d exits)" % s["n_exits"])
+    ax.set_xscale("log")
+    ax.set_xlabel("wall speed $v_x$ (m/s)")
+    ax.set_title("(a) wall speed")
+
+    # (b) time step factor of the shear stage (N = 1000)
+    ax = axes[1]
+    for folder in ("dtq10", "dtq10b"):
+        for (seed, f), s in runs_matching(os.path.join(a.runs, folder), r"s(\d+)_f([0-9.]+)"):
+            z = number(s.get("z_g_exit_mean"))
+            if z is not None:
+                ax.plot(float(f), z, SEED_MARK.get(seed, "x"), color="C1", mfc="none",
+                        label="seed " + seed)
+    ax.set_xlabel("dt_factor_shear")
+    ax.set_title("(b) time step, N = 1000, v_x = 0.05 m/s")
+
+    # (c) rolling and torsion arm (N = 1000), exits and N_IL
+    ax = axes[2]
+    ax2 = ax.twinx()
+    pos = {"base": 0, "arm2": 1, "arm2e": 2}
+    for (seed, var), s in runs_matching(os.path.join(a.runs, "arm"), r"s(\d+)_(base|arm2|arm2e)"):
+        z, n = number(s.get("z_g_exit_mean")), number(s.get("N_IL"))
+        x = pos[var] + 0.08 * (int(seed) - 2)
+        if z is not None:
+            ax.plot(x, z, SEED_MARK.get(seed, "x"), color="C2", mfc="none", label="seed " + seed)
+        if n is not None:
+            ax2.plot(x, n, SEED_MARK.get(seed, "x"), color="0.5", ms=4)
+    ax.set_xticks(list(pos.values()))
+    ax.set_xticklabels(["arm a'\n(default)", "arm 2a'", "arm 2a',\nsame e"])
+    ax2.set_ylabel("$N_{IL}$ (grey)")
+    ax.set_title("(c) rolling/torsion arm, N = 1000")
+
+    for ax, loc in zip(axes, ("lower left", "lower left", "center")):
+        ax.axhline(PAPER_EXIT, color="k", ls="--", lw=0.8)
+        ax.set_ylabel("$z_g$ at the liquefaction exits (mean)")
+        handles, labels = ax.get_legend_handles_labels()
+        seen = {}
+        for h, lab in zip(handles, labels):
+            seen.setdefault(lab, h)
+        if seen:
+            ax.legend(seen.values(), seen.keys(), fontsize=7, loc=loc)
+    axes[0].text(0.005, PAPER_EXIT + 0.01, "paper: 3.6", fontsize=8)
+    fig.tight_layout()
+    os.makedirs(os.path.dirname(a.out) or ".", exist_ok=True)
+    fig.savefig(a.out, dpi=110)
+    print("wrote " + a.out)
+
+
+if __name__ == "__main__":
+    main()
