@@ -29,12 +29,12 @@ INPUTS = os.path.abspath(os.environ.get(
     "GRFLOW_INPUTS", os.path.join(os.path.dirname(__file__), "..", "..", "inputs")))
 
 
-def deck(outdir, *vars_, inputs=INPUTS, check=True, timeout=900):
+def deck(outdir, *vars_, inputs=INPUTS, check=True, timeout=900, nprocs=1):
     args = ["-in", os.path.join(inputs, "cyclic_shear.lmp"), "-var", "inputs", inputs,
             "-var", "outdir", str(outdir), "-var", "stage", "prep"]
     for i in range(0, len(vars_), 2):
         args += ["-var", vars_[i], str(vars_[i + 1])]
-    return run_lmp(args, outdir.parent, check=check, timeout=timeout)
+    return run_lmp(args, outdir.parent, nprocs=nprocs, check=check, timeout=timeout)
 
 
 def trials(outdir):
@@ -107,13 +107,14 @@ print           "" file ${outdir}/prep.restart screen no
 """
 
 
-def fake(tmp_path, e_of_mu, *vars_):
+def fake(tmp_path, e_of_mu, *vars_, nprocs=1):
     """the decks with prepare.lmp replaced: e = e_of_mu (a LAMMPS formula in v_mu)"""
     inputs = tmp_path / "inputs"
     shutil.copytree(INPUTS, inputs)
     (inputs / "prepare.lmp").write_text(FAKE_PREP % e_of_mu)
     out = tmp_path / "out"
-    proc = deck(out, "calibrate", "yes", *vars_, inputs=str(inputs), check=False, timeout=120)
+    proc = deck(out, "calibrate", "yes", *vars_, inputs=str(inputs), check=False, timeout=120,
+                nprocs=nprocs)
     return out, proc
 
 
@@ -141,10 +142,12 @@ def check_rule(rows, target=0.647, slope0=0.6):
         assert rows[n][1] == pytest.approx(expected_next(rows[:n], target, slope0), abs=5e-6), n
 
 
-def test_rule_linear(tmp_path):
+@pytest.mark.parametrize("nprocs", [1, 2])
+def test_rule_linear(tmp_path, nprocs):
     # e = 0.6 + 0.5 mu, first trial 0.3, first slope 0.6 (wrong on purpose):
-    # 0.3 -> 0.12833 by the slope, then the secant is exact: 0.094
-    out, proc = fake(tmp_path, "0.6+0.5*v_mu", "mu_prep", 0.3)
+    # 0.3 -> 0.12833 by the slope, then the secant is exact: 0.094; the
+    # loop (clear, jump, variables kept) the same on 2 MPI ranks
+    out, proc = fake(tmp_path, "0.6+0.5*v_mu", "mu_prep", 0.3, nprocs=nprocs)
     assert proc.returncode == 0, proc.stdout[-3000:]
     rows = trials(out)
     assert [m for _, m, _ in rows] == [0.3, 0.12833, 0.094]
@@ -165,9 +168,11 @@ def test_rule_bracket_never_reaches(tmp_path):
     assert not (out / "prep.restart").exists() and not (out / "prep.json").exists()
 
 
-def test_rule_target_out_of_reach(tmp_path):
+@pytest.mark.parametrize("nprocs", [1, 2])
+def test_rule_target_out_of_reach(tmp_path, nprocs):
     # e >= 0.7 at any friction: the slope leads to mu = 0, then 0 again
-    out, proc = fake(tmp_path, "0.7+0.1*v_mu")
+    # (on 2 ranks too: rank 0 removes the files, every rank stops)
+    out, proc = fake(tmp_path, "0.7+0.1*v_mu", nprocs=nprocs)
     assert proc.returncode != 0
     assert "the next trial would be the same friction" in proc.stdout
     assert "e_target 0.647 cannot be reached" in proc.stdout
