@@ -31,7 +31,8 @@ for s in $seeds; do
     IFS='|' read -r name args <<< "$v"
     printf '%s\0%s\0%s\0' "$s" "$name" "$args"
   done
-done | xargs -0 -P "${JOBS:-2}" -n 3 bash -c 'job "$@"' _
+done | xargs -0 -r -P "${JOBS:-2}" -n 3 bash -c 'job "$@"' _ \
+  || echo "some runs failed (a preparation that did not converge, calibrate yes that found no friction, ...): their rows say so; see their logs" >&2
 /usr/bin/python3 - "$OUT" <<'PY'
 import json, os, sys
 out = sys.argv[1]
@@ -41,8 +42,11 @@ keys = ["e_prep", "z_g_prep", "N_IL", "n_exits", "z_g_exit_mean", "z_g_post_IL_m
 print("| run | " + " | ".join(keys) + " | wall (s) |")
 print("| --- |" + " --- |" * (len(keys) + 1))
 for name in sorted(os.listdir(out)):
+    if not os.path.isdir(os.path.join(out, name)):
+        continue
     f = os.path.join(out, name, "figures", "summary.json")
     if not os.path.isfile(f):
+        print("| %s | failed or unfinished: no figures/summary.json |" % name)
         continue
     e = {x["name"]: x["measured"] for x in json.load(open(f))["entries"]}
     fmt = lambda v: ("%.4g" % v) if isinstance(v, (int, float)) else str(v)
