@@ -2,15 +2,15 @@
 # GRFLOW - one figure of the sensitivity runs (issue 16).
 # Copyright the GRFLOW developers; GNU General Public License version 2.
 """What moves the liquefaction exits' z_g and N_IL: the wall speed v_x, the
-shear stage's time step factor and the rolling/torsion arm, each changed
-alone, from the runs' figures/summary.json as analysis/make_figures.py
+shear stage's time step factor, the rolling/torsion arm and the
+preparation route, each changed alone, from the runs' figures/summary.json as analysis/make_figures.py
 wrote them (this script only draws; every number is the summary's).
 
     /usr/bin/python3 bench/plot_sensitivity.py [--out PNG] [--runs DIR]
 
 DIR (default runs/) holds the run directories of bench/vx_quick.sh (vx/),
-bench/timestep_study.sh (dtq10/, dtq10b/), bench/variants_quick.sh (arm/),
-and the paper-size runs case03/ (v_x = 0.01 m/s) and vx005/ (0.005 m/s,
+bench/timestep_study.sh (dtq10/, dtq10b/), bench/variants_quick.sh (arm/,
+route/), and the paper-size runs case03/ (v_x = 0.01 m/s) and vx005/ (0.005 m/s,
 same preparation and time step); a missing run is left out of its panel.
 """
 
@@ -59,7 +59,7 @@ def main():
     ap.add_argument("--runs", default="runs")
     ap.add_argument("--out", default="doc/figures/sensitivity.png")
     a = ap.parse_args()
-    fig, axes = plt.subplots(1, 3, figsize=(15, 4.6))
+    fig, axes = plt.subplots(1, 4, figsize=(20, 4.6))
 
     # (a) wall speed
     ax = axes[0]
@@ -105,7 +105,30 @@ def main():
     ax2.set_ylabel("$N_{IL}$ (grey)")
     ax.set_title("(c) rolling/torsion arm, N = 1000")
 
-    for ax, loc in zip(axes, ("lower left", "lower left", "center")):
+    # (d) preparation route: compression alone against the agitated route,
+    # both calibrated to the same e (0.714 and 0.70), v_x = 0.01 m/s;
+    # exits and N_IL ("no IL": the run reached max_cycles first)
+    ax = axes[3]
+    ax2 = ax.twinx()
+    pos = {"plain": 0, "agit": 1, "plain70": 2, "agit70": 3}
+    for (seed, var), s in runs_matching(os.path.join(a.runs, "route"),
+                                        r"s(\d+)_(plain|agit|plain70|agit70)"):
+        z, n = number(s.get("z_g_exit_mean")), number(s.get("N_IL"))
+        x = pos[var] + 0.08 * (int(seed) - 2)
+        if z is not None:
+            ax.plot(x, z, SEED_MARK.get(seed, "x"), color="C4", mfc="none", label="seed " + seed)
+        if n is not None:
+            ax2.plot(x, n, SEED_MARK.get(seed, "x"), color="0.5", ms=4)
+        else:
+            ax.annotate("no IL\n(seed %s)" % seed, (x, 0.3), xycoords=("data", "axes fraction"),
+                        ha="center", fontsize=7, color="0.3")
+    ax.set_xticks(list(pos.values()))
+    ax.set_xticklabels(["compression\nalone", "agitated", "compression\nalone", "agitated"])
+    ax.set_xlabel("e = 0.714                         e = 0.70")
+    ax2.set_ylabel("$N_{IL}$ (grey)")
+    ax.set_title("(d) preparation route, N = 1000, v_x = 0.01 m/s")
+
+    for ax, loc in zip(axes, ("lower left", "lower left", "center", "upper center")):
         ax.axhline(PAPER_EXIT, color="k", ls="--", lw=0.8)
         ax.set_ylabel("$z_g$ at the liquefaction exits (mean)")
         handles, labels = ax.get_legend_handles_labels()
