@@ -54,6 +54,28 @@ def runs_matching(folder, pattern):
     return out
 
 
+def variant_panel(ax, folder, variants, ticks, color):
+    """the exits' z_g (colour) and N_IL (grey, right axis) of the runs
+    s<seed>_<variant> in folder, one column per variant; "no IL" where the
+    run reached max_cycles without initial liquefaction"""
+    ax2 = ax.twinx()
+    pos = {v: k for k, v in enumerate(variants)}
+    pattern = r"s(\d+)_(%s)" % "|".join(variants)
+    for (seed, var), s in runs_matching(folder, pattern):
+        z, n = number(s.get("z_g_exit_mean")), number(s.get("N_IL"))
+        x = pos[var] + 0.08 * (int(seed) - 2)
+        if z is not None:
+            ax.plot(x, z, SEED_MARK.get(seed, "x"), color=color, mfc="none", label="seed " + seed)
+        if n is not None:
+            ax2.plot(x, n, SEED_MARK.get(seed, "x"), color="0.5", ms=4)
+        else:
+            ax.annotate("no IL (seed %s)" % seed, (x, 0.2 + 0.06 * int(seed)), xycoords=("data", "axes fraction"),
+                        ha="center", fontsize=7, color="0.3")
+    ax.set_xticks(list(pos.values()))
+    ax.set_xticklabels(ticks)
+    ax2.set_ylabel("$N_{IL}$ (grey)")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--runs", default="runs")
@@ -90,43 +112,16 @@ def main():
     ax.set_title("(b) time step, N = 1000, v_x = 0.05 m/s")
 
     # (c) rolling and torsion arm (N = 1000), exits and N_IL
-    ax = axes[2]
-    ax2 = ax.twinx()
-    pos = {"base": 0, "arm2": 1, "arm2e": 2}
-    for (seed, var), s in runs_matching(os.path.join(a.runs, "arm"), r"s(\d+)_(base|arm2|arm2e)"):
-        z, n = number(s.get("z_g_exit_mean")), number(s.get("N_IL"))
-        x = pos[var] + 0.08 * (int(seed) - 2)
-        if z is not None:
-            ax.plot(x, z, SEED_MARK.get(seed, "x"), color="C2", mfc="none", label="seed " + seed)
-        if n is not None:
-            ax2.plot(x, n, SEED_MARK.get(seed, "x"), color="0.5", ms=4)
-    ax.set_xticks(list(pos.values()))
-    ax.set_xticklabels(["arm a'\n(default)", "arm 2a'", "arm 2a',\nsame e"])
-    ax2.set_ylabel("$N_{IL}$ (grey)")
-    ax.set_title("(c) rolling/torsion arm, N = 1000")
+    variant_panel(axes[2], os.path.join(a.runs, "arm"), ["base", "arm2", "arm2e"],
+                  ["arm a'\n(default)", "arm 2a'", "arm 2a',\nsame e"], "C2")
+    axes[2].set_title("(c) rolling/torsion arm, N = 1000")
 
     # (d) preparation route: compression alone against the agitated route,
-    # both calibrated to the same e (0.714 and 0.70), v_x = 0.01 m/s;
-    # exits and N_IL ("no IL": the run reached max_cycles first)
-    ax = axes[3]
-    ax2 = ax.twinx()
-    pos = {"plain": 0, "agit": 1, "plain70": 2, "agit70": 3}
-    for (seed, var), s in runs_matching(os.path.join(a.runs, "route"),
-                                        r"s(\d+)_(plain|agit|plain70|agit70)"):
-        z, n = number(s.get("z_g_exit_mean")), number(s.get("N_IL"))
-        x = pos[var] + 0.08 * (int(seed) - 2)
-        if z is not None:
-            ax.plot(x, z, SEED_MARK.get(seed, "x"), color="C4", mfc="none", label="seed " + seed)
-        if n is not None:
-            ax2.plot(x, n, SEED_MARK.get(seed, "x"), color="0.5", ms=4)
-        else:
-            ax.annotate("no IL\n(seed %s)" % seed, (x, 0.3), xycoords=("data", "axes fraction"),
-                        ha="center", fontsize=7, color="0.3")
-    ax.set_xticks(list(pos.values()))
-    ax.set_xticklabels(["compression\nalone", "agitated", "compression\nalone", "agitated"])
-    ax.set_xlabel("e = 0.714                         e = 0.70")
-    ax2.set_ylabel("$N_{IL}$ (grey)")
-    ax.set_title("(d) preparation route, N = 1000, v_x = 0.01 m/s")
+    # both calibrated to the same e (0.714 and 0.70), v_x = 0.01 m/s
+    variant_panel(axes[3], os.path.join(a.runs, "route"), ["plain", "agit", "plain70", "agit70"],
+                  ["compression\nalone", "agitated", "compression\nalone", "agitated"], "C4")
+    axes[3].set_xlabel("e = 0.714                         e = 0.70")
+    axes[3].set_title("(d) preparation route, N = 1000, v_x = 0.01 m/s")
 
     for ax, loc in zip(axes, ("lower left", "lower left", "center", "upper center")):
         ax.axhline(PAPER_EXIT, color="k", ls="--", lw=0.8)
