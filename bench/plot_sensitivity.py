@@ -2,8 +2,8 @@
 # GRFLOW - one figure of the sensitivity runs (issue 16).
 # Copyright the GRFLOW developers; GNU General Public License version 2.
 """What moves the liquefaction exits' z_g and N_IL: the wall speed v_x, the
-shear stage's time step factor, the rolling/torsion arm and the
-preparation route, each changed alone, from the runs' figures/summary.json as analysis/make_figures.py
+shear stage's time step factor, the rolling/torsion arm, the
+preparation route and N (1000 against 2000), each changed alone, from the runs' figures/summary.json as analysis/make_figures.py
 wrote them (this script only draws; every number is the summary's).
 
     /usr/bin/python3 bench/plot_sensitivity.py [--out PNG] [--runs DIR]
@@ -118,10 +118,13 @@ def main():
 
     # (d) preparation route: compression alone against the agitated route,
     # both calibrated to the same e (0.714 and 0.70), v_x = 0.01 m/s
-    variant_panel(axes[3], os.path.join(a.runs, "route"), ["plain", "agit", "plain70", "agit70"],
-                  ["compression\nalone", "agitated", "compression\nalone", "agitated"], "C4")
-    axes[3].set_xlabel("e = 0.714                         e = 0.70")
-    axes[3].set_title("(d) preparation route, N = 1000, v_x = 0.01 m/s")
+    # and, last column, compression alone at N = 2000 (e = 0.714)
+    variant_panel(axes[3], os.path.join(a.runs, "route"),
+                  ["plain", "agit", "plain70", "agit70", "n2000"],
+                  ["compression\nalone", "agitated", "compression\nalone", "agitated",
+                   "compression\nalone,\nN = 2000"], "C4")
+    axes[3].set_xlabel("e = 0.714             e = 0.70            e = 0.714")
+    axes[3].set_title("(d) preparation route (N = 1000) and N, v_x = 0.01 m/s")
 
     for ax, loc in zip(axes, ("lower left", "lower left", "center", "upper center")):
         ax.axhline(PAPER_EXIT, color="k", ls="--", lw=0.8)
