@@ -3,15 +3,17 @@
 # Copyright the GRFLOW developers; GNU General Public License version 2.
 """What moves the liquefaction exits' z_g and N_IL: the wall speed v_x, the
 shear stage's time step factor, the rolling/torsion arm, the
-preparation route and N (1000 against 2000), each changed alone, from the runs' figures/summary.json as analysis/make_figures.py
-wrote them (this script only draws; every number is the summary's).
+preparation route and N (1000 against 2000), each changed alone, from
+the runs' figures/summary.json as analysis/make_figures.py wrote them
+(this script only draws; every number is the summary's).
 
     /usr/bin/python3 bench/plot_sensitivity.py [--out PNG] [--runs DIR]
 
 DIR (default runs/) holds the run directories of bench/vx_quick.sh (vx/),
 bench/timestep_study.sh (dtq10/, dtq10b/), bench/variants_quick.sh (arm/,
-route/), and the paper-size runs case03/ (v_x = 0.01 m/s) and vx005/ (0.005 m/s,
-same preparation and time step); a missing run is left out of its panel.
+route/), and the paper-size runs case03/ (v_x = 0.01 m/s) and vx005/
+(0.005 m/s, same preparation and time step); a missing run is left out of
+its panel.
 """
 
 import argparse
@@ -69,8 +71,8 @@ def variant_panel(ax, folder, variants, ticks, color):
         if n is not None:
             ax2.plot(x, n, SEED_MARK.get(seed, "x"), color="0.5", ms=4)
         else:
-            ax.annotate("no IL (seed %s)" % seed, (x, 0.2 + 0.06 * int(seed)), xycoords=("data", "axes fraction"),
-                        ha="center", fontsize=7, color="0.3")
+            ax.annotate("no IL (seed %s)" % seed, (x, 0.2 + 0.06 * int(seed)),
+                        xycoords=("data", "axes fraction"), ha="center", fontsize=7, color="0.3")
     ax.set_xticks(list(pos.values()))
     ax.set_xticklabels(ticks)
     ax2.set_ylabel("$N_{IL}$ (grey)")

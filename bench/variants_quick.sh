@@ -7,7 +7,9 @@
 #   bash bench/variants_quick.sh OUT_DIR "SEEDS" "NAME|ARGS" ...
 #   bash bench/variants_quick.sh runs/arm "1 2 3" "base|" "arm2|-var kr_kn 0.4 -var mu_r 0.2"
 # A run directory OUT_DIR/s<seed>_<name> that has figures/summary.json is
-# not run again (delete it to rerun).  Environment: LMP (default
+# not run again (delete it to rerun); one without it (a failed run, e.g.
+# calibrate yes finding no friction) is run again and has a "failed or
+# unfinished" row in the table.  Environment: LMP (default
 # build/lmp), JOBS (default 2).
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
