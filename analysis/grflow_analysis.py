@@ -15,7 +15,7 @@ are referred to by their index in the arrays returned by
 Definitions (section numbers of the paper, paper/isochoric-cyclic-shearing.md):
 
 * fractional cycle count N (inputs/README.md; decided by fix grflow/shear,
-  src/GRFLOW/grflow_cycle_count.h): shear starts at N = 0; reversal k is at
+  src/shared/grflow_cycle_count.h): shear starts at N = 0; reversal k is at
   N = k/2 - 1/4, the first zero-crossing of tau after it at N = k/2; linear
   in time in between (see :func:`cycle_count`).  The events and N_IL are
   the fix's (events.txt, :func:`run_events`); :func:`cycle_events` finds

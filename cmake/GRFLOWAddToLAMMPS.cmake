@@ -1,5 +1,6 @@
 # Add the GRFLOW package to a LAMMPS source tree, the way a package is added
-# to one's own LAMMPS: src/GRFLOW, GRFLOW's OPENMP variants in src/OPENMP,
+# to one's own LAMMPS: src/GRFLOW (GRFLOW's LAMMPS classes and the host-free
+# sources it shares with LIGGGHTS, src/shared), its OPENMP variants in src/OPENMP,
 # and GRFLOW in the package lists of cmake/CMakeLists.txt (for
 # -D PKG_GRFLOW=on) and src/Makefile (for make package-status and friends;
 # make yes-grflow works without it).  Unlike GRFLOW's own build, this writes
@@ -30,6 +31,8 @@ if(EXISTS ${tree}/src/GRFLOW AND NOT EXISTS ${tree}/src/GRFLOW/grflow_contact.h)
 endif()
 file(REMOVE_RECURSE ${tree}/src/GRFLOW)
 file(COPY ${top}/src/GRFLOW DESTINATION ${tree}/src)
+file(GLOB shared_files ${top}/src/shared/*)
+file(COPY ${shared_files} DESTINATION ${tree}/src/GRFLOW)
 file(GLOB omp_files ${top}/src/OPENMP/*)
 file(COPY ${omp_files} DESTINATION ${tree}/src/OPENMP)
 

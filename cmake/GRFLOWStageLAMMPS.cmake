@@ -2,7 +2,9 @@
 # into the original tree.
 #
 # The staged tree lives in the build directory.  Its src/ is a real directory
-# of symbolic links to the original entries plus a link to our src/GRFLOW; its
+# of symbolic links to the original entries; its src/GRFLOW is a real
+# directory of links to our LAMMPS adapters (src/GRFLOW) and to the
+# host-free sources shared with LIGGGHTS (src/shared); its
 # src/OPENMP is a real directory too, of links to the original OPENMP entries
 # plus our accelerator variants (src/OPENMP/*_omp.*, found there by the OPENMP
 # package's RegisterStylesExt as for any other package); its cmake/ is a copy
@@ -10,7 +12,7 @@
 # are staged empty so "install" does not copy data GRFLOW never uses.
 #
 # In:  LAMMPS_SOURCE_DIR (original tree), GRFLOW_PACKAGE_DIR (our src/GRFLOW),
-#      GRFLOW_OPENMP_DIR (our src/OPENMP)
+#      GRFLOW_SHARED_DIR (our src/shared), GRFLOW_OPENMP_DIR (our src/OPENMP)
 # Out: GRFLOW_STAGED_LAMMPS (staged tree root)
 
 # A LAMMPS source tree of a version GRFLOW supports, or a fatal error.  The
@@ -55,10 +57,12 @@ function(grflow_stage_lammps)
     endif()
   endforeach()
 
-  # rebuild the link farm when the original tree changes location or our
-  # OPENMP files change
+  # rebuild the link farm when the original tree changes location or the
+  # set of our files changes
+  file(GLOB pkg_files RELATIVE ${GRFLOW_PACKAGE_DIR} ${GRFLOW_PACKAGE_DIR}/*)
+  file(GLOB shared_files RELATIVE ${GRFLOW_SHARED_DIR} ${GRFLOW_SHARED_DIR}/*)
   set(stamp ${stage}/.grflow-staged-from)
-  set(stamp_text "${orig}\nOPENMP: ${omp_files}")
+  set(stamp_text "${orig}\nOPENMP: ${omp_files}\nGRFLOW: ${pkg_files}\nshared: ${shared_files}")
   set(restage TRUE)
   if(EXISTS ${stamp})
     file(READ ${stamp} previous)
@@ -80,7 +84,13 @@ function(grflow_stage_lammps)
     foreach(e ${entries})
       file(CREATE_LINK ${orig}/src/${e} ${stage}/src/${e} SYMBOLIC)
     endforeach()
-    file(CREATE_LINK ${GRFLOW_PACKAGE_DIR} ${stage}/src/GRFLOW SYMBOLIC)
+    file(MAKE_DIRECTORY ${stage}/src/GRFLOW)
+    foreach(e ${pkg_files})
+      file(CREATE_LINK ${GRFLOW_PACKAGE_DIR}/${e} ${stage}/src/GRFLOW/${e} SYMBOLIC)
+    endforeach()
+    foreach(e ${shared_files})
+      file(CREATE_LINK ${GRFLOW_SHARED_DIR}/${e} ${stage}/src/GRFLOW/${e} SYMBOLIC)
+    endforeach()
     file(MAKE_DIRECTORY ${stage}/src/OPENMP)
     file(GLOB entries RELATIVE ${orig}/src/OPENMP ${orig}/src/OPENMP/*)
     foreach(e ${entries})

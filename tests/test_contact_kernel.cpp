@@ -12,7 +12,7 @@
 ------------------------------------------------------------------------- */
 
 /* ----------------------------------------------------------------------
-   Unit tests for the GRFLOW contact kernel (src/GRFLOW/grflow_contact.h)
+   Unit tests for the GRFLOW contact kernel (src/shared/grflow_contact.h)
    against closed-form results of the contact law written out in
    notes/contact-law.md (linear spring-dashpot after Luding 2008):
 

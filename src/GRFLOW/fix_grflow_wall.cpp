@@ -26,6 +26,7 @@
 
 #include "fix_grflow_wall.h"
 
+#include "grflow_contact.h"
 #include "grflow_restart.h"
 
 #include "atom.h"

@@ -16,23 +16,21 @@
    pair granular/grflow and by fix grflow/wall:
      kn cn [kt v] [ct v] [mut v] [kr v] [cr v] [mur v] [ko v] [co v] [muo v]
            [rolling off] [torsion off]
-   Unset keywords take the ratios of the paper's Table 1.
+   Unset keywords take the ratios of the paper's Table 1.  The names,
+   defaults and rules are the host-free ones of grflow_contact_coeffs.h;
+   this file reads them from LAMMPS arguments and reports LAMMPS errors.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_GRFLOW_COEFFS_H
 #define LMP_GRFLOW_COEFFS_H
 
-#include "grflow_contact.h"
+#include "grflow_contact_coeffs.h"
 
 #include <string>
 
 namespace LAMMPS_NS {
 class LAMMPS;
 namespace GRFLOW {
-
-  // order of ContactCoeffs' members; also the keywords (kn, cn positional)
-  enum { KN, CN, KT, CT, MUT, KR, CR, MUR, KO, CO, MUO, NCOEFF };
-  extern const char *const COEFF_NAMES[NCOEFF];
 
   // parse coefficients from arg[first]; returns the index after the last
   // one used.  An unknown keyword is an error unless stop_at_unknown.
@@ -42,8 +40,6 @@ namespace GRFLOW {
   // stop with an error naming the coefficient unless kn > 0 and every
   // other coefficient >= 0, all finite; where: the command or the source
   void check_coeffs(LAMMPS *lmp, const std::string &where, const double *value);
-
-  void pack_coeffs(const double *value, ContactCoeffs &c);
 
   // the value of a velocity_arm keyword: 0 for reduced (a - delta/2), 1
   // for full (the radii); an error naming cmd otherwise

@@ -25,6 +25,7 @@
 #include "pair_granular_grflow_eval.h"
 
 #include "grflow_coeffs.h"
+#include "grflow_contact.h"
 
 #include "atom.h"
 #include "comm.h"

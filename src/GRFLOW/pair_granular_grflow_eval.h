@@ -23,6 +23,8 @@
 
 #include "pair_granular_grflow.h"
 
+#include "grflow_contact.h"
+
 #include "atom.h"
 #include "fix_neigh_history.h"
 #include "force.h"

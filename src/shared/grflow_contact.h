@@ -25,6 +25,8 @@
 #ifndef LMP_GRFLOW_CONTACT_H
 #define LMP_GRFLOW_CONTACT_H
 
+#include "grflow_contact_coeffs.h"
+
 #include <cfloat>
 #include <cmath>
 
@@ -38,15 +40,6 @@
 
 namespace LAMMPS_NS {
 namespace GRFLOW {
-
-  // coefficients of one type pair, SI units
-
-  struct ContactCoeffs {
-    double kn, cn;         // normal stiffness (N/m), viscosity (kg/s)
-    double kt, ct, mut;    // sliding stiffness, viscosity, friction coefficient
-    double kr, cr, mur;    // rolling
-    double ko, co, muo;    // torsion
-  };
 
   // per-contact history: sliding spring (3), rolling spring (3), torsion spring (1)
 
@@ -494,23 +487,37 @@ namespace GRFLOW {
   }
 
   /* ----------------------------------------------------------------------
-     geometry of a sphere-wall contact: a flat wall normal to z on the side
-     sign (+1: the wall is below, n = +z; -1: above, n = -z), the sphere's
-     centre at gap = sign (z - z_wall) from it, gap < rad.  The wall is a
-     sphere of infinite radius: a' = a_i, and it does not spin (arm_j = 0).
+     geometry of a sphere-plane contact: unit normal n pointing from the
+     plane to the sphere's centre, overlap delta = rad - (distance of the
+     centre from the plane) > 0.  The plane is a sphere of infinite
+     radius: a' = a_i, and it does not spin (arm_j = 0).
   ------------------------------------------------------------------------- */
 
-  static GRFLOW_INLINE void wall_geometry(double gap, double rad, double sign, bool full_arm,
-                                          ContactGeometry &g)
+  static GRFLOW_INLINE void plane_geometry(const double *n, double delta, double rad, bool full_arm,
+                                           ContactGeometry &g)
   {
-    g.n[0] = g.n[1] = 0.0;
-    g.n[2] = sign;
-    g.delta = rad - gap;
+    g.n[0] = n[0];
+    g.n[1] = n[1];
+    g.n[2] = n[2];
+    g.delta = delta;
     g.arm_i = contact_arm(rad, g.delta);
     g.arm_j = 0.0;
     g.varm_i = full_arm ? rad : g.arm_i;
     g.varm_j = 0.0;
     g.reff = rad;
+  }
+
+  /* ----------------------------------------------------------------------
+     a flat wall normal to z on the side sign (+1: the wall is below,
+     n = +z; -1: above, n = -z), the sphere's centre at gap = sign (z -
+     z_wall) from it, gap < rad
+  ------------------------------------------------------------------------- */
+
+  static GRFLOW_INLINE void wall_geometry(double gap, double rad, double sign, bool full_arm,
+                                          ContactGeometry &g)
+  {
+    const double n[3] = {0.0, 0.0, sign};
+    plane_geometry(n, rad - gap, rad, full_arm, g);
   }
 
   /* ----------------------------------------------------------------------
