@@ -26,6 +26,7 @@
 #include "compute_grflow_network.h"
 
 #include "grflow_contact.h"
+#include "grflow_network.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -52,100 +53,34 @@ enum { INSIDE, NCONTACTS };
 
 /* ---------------------------------------------------------------------- */
 
+namespace {
+// how the shared keyword parser (GRFLOW::NetworkOptions) reads numbers and
+// reports errors in LAMMPS
+struct ParseHost {
+  LAMMPS *lmp;
+  double number(const char *s) { return utils::numeric(FLERR, s, false, lmp); }
+  int integer(const char *s) { return utils::inumeric(FLERR, s, false, lmp); }
+  void missing(const std::string &cmd) { utils::missing_cmd_args(FLERR, cmd, lmp->error); }
+  void fail(const std::string &message) { lmp->error->all(FLERR, message); }
+};
+}    // namespace
+
 ComputeGRFLOWNetwork::ComputeGRFLOWNetwork(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), zlo_str(nullptr), zhi_str(nullptr), idregion(nullptr), region(nullptr),
-    volume_str(nullptr), inside(nullptr), ncontact(nullptr)
+    Compute(lmp, narg, arg), region(nullptr), inside(nullptr), ncontact(nullptr)
 {
-  cmax = 12;
-  tau_a = 0;
-  tau_b = 2;
-  slab = 0.8;
-  p0 = 0.0;
-  p0flag = p0first = 0;
-  p0_keyword = false;
   nmax = 0;
   commflag = INSIDE;
 
-  int iarg = 3;
-  while (iarg < narg) {
-    const std::string kw = arg[iarg];
-    const std::string cmd = "compute grflow/network " + kw;
-    if (kw == "region") {
-      if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, cmd, error);
-      delete[] idregion;
-      idregion = utils::strdup(arg[iarg + 1]);
-      if (!domain->get_region_by_id(idregion))
-        error->all(FLERR, "Region {} for compute grflow/network does not exist", idregion);
-      iarg += 2;
-    } else if (kw == "slab") {
-      if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, cmd, error);
-      slab = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      if (slab <= 0.0 || slab > 1.0)
-        error->all(FLERR, "Compute grflow/network slab must be in (0,1], got {}", slab);
-      iarg += 2;
-    } else if (kw == "zlimits") {
-      if (iarg + 3 > narg) utils::missing_cmd_args(FLERR, cmd, error);
-      delete[] zlo_str;
-      delete[] zhi_str;
-      zlo_str = utils::strdup(arg[iarg + 1]);
-      zhi_str = utils::strdup(arg[iarg + 2]);
-      iarg += 3;
-    } else if (kw == "volume") {
-      if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, cmd, error);
-      delete[] volume_str;
-      volume_str = utils::strdup(arg[iarg + 1]);
-      iarg += 2;
-    } else if (kw == "shear") {
-      if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, cmd, error);
-      const std::string c = arg[iarg + 1];
-      const int a = c.size() == 2 ? c[0] - 'x' : -1;
-      const int b = c.size() == 2 ? c[1] - 'x' : -1;
-      if (a < 0 || a > 2 || b < 0 || b > 2 || a == b)
-        error->all(FLERR,
-                   "Compute grflow/network shear must be two different axes "
-                   "(xy, xz, yz, ...), got {}",
-                   c);
-      tau_a = a;
-      tau_b = b;
-      iarg += 2;
-    } else if (kw == "p0") {
-      if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, cmd, error);
-      p0_keyword = true;
-      if (strcmp(arg[iarg + 1], "first") == 0) {
-        p0first = 1;
-        p0flag = 0;
-      } else {
-        p0 = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-        if (p0 <= 0.0) error->all(FLERR, "Compute grflow/network p0 must be > 0, got {}", p0);
-        p0flag = 1;
-        p0first = 0;
-      }
-      iarg += 2;
-    } else if (kw == "cmax") {
-      if (iarg + 2 > narg) utils::missing_cmd_args(FLERR, cmd, error);
-      cmax = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
-      if (cmax < 1 || cmax > 100)
-        error->all(FLERR, "Compute grflow/network cmax must be in 1..100, got {}", cmax);
-      iarg += 2;
-    } else {
-      error->all(FLERR, "Unknown compute grflow/network keyword: {}", kw);
-    }
-  }
-
-  if (idregion && zlo_str)
-    error->all(FLERR, "Compute grflow/network: use either region or zlimits, not both");
-  if (!idregion && volume_str)
-    error->all(FLERR, "Compute grflow/network volume goes with region (the slab volume is known)");
-
-  // check numbers now, variables at init()
-  for (const char *s : {zlo_str, zhi_str, volume_str})
-    if (s && strncmp(s, "v_", 2) != 0) utils::numeric(FLERR, s, false, lmp);
+  ParseHost host{lmp};
+  opt.parse(narg, arg, 3, host);
+  if (!opt.region.empty() && !domain->get_region_by_id(opt.region))
+    error->all(FLERR, "Region {} for compute grflow/network does not exist", opt.region);
 
   if (!atom->radius_flag)
     error->all(FLERR, "Compute grflow/network requires atom attribute radius (atom_style sphere)");
 
   vector_flag = 1;
-  size_vector = PC0 + cmax + 1;
+  size_vector = NetworkLayout::size(opt.cmax);
   extvector = 0;
   vector = new double[size_vector];
   for (int k = 0; k < size_vector; k++) vector[k] = 0.0;
@@ -159,10 +94,6 @@ ComputeGRFLOWNetwork::ComputeGRFLOWNetwork(LAMMPS *lmp, int narg, char **arg) :
 ComputeGRFLOWNetwork::~ComputeGRFLOWNetwork()
 {
   delete[] vector;
-  delete[] zlo_str;
-  delete[] zhi_str;
-  delete[] idregion;
-  delete[] volume_str;
   memory->destroy(inside);
   memory->destroy(ncontact);
 }
@@ -192,14 +123,15 @@ void ComputeGRFLOWNetwork::check_setup()
                "not {}",
                force->pair_style);
 
-  if (idregion) {
-    region = domain->get_region_by_id(idregion);
-    if (!region) error->all(FLERR, "Region {} for compute grflow/network does not exist", idregion);
-    if (!volume_str && (strcmp(region->style, "block") != 0 || !region->interior))
+  if (!opt.region.empty()) {
+    region = domain->get_region_by_id(opt.region);
+    if (!region)
+      error->all(FLERR, "Region {} for compute grflow/network does not exist", opt.region);
+    if (opt.volume.empty() && (strcmp(region->style, "block") != 0 || !region->interior))
       error->all(FLERR,
                  "Compute grflow/network region {} is not an inside block: give its "
                  "volume with the volume keyword",
-                 idregion);
+                 opt.region);
   }
   walls.clear();
   for (auto *ifix : modify->get_fix_by_style("^grflow/wall$")) {
@@ -212,8 +144,9 @@ void ComputeGRFLOWNetwork::check_setup()
     walls.push_back(wfix);
   }
 
-  for (const char *s : {zlo_str, zhi_str, volume_str}) {
-    if (!s || strncmp(s, "v_", 2) != 0) continue;
+  for (const std::string &str : {opt.zlo, opt.zhi, opt.volume}) {
+    const char *s = str.c_str();
+    if (strncmp(s, "v_", 2) != 0) continue;
     const int ivar = input->variable->find(s + 2);
     if (ivar < 0) error->all(FLERR, "Variable {} for compute grflow/network does not exist", s + 2);
     if (!input->variable->equalstyle(ivar))
@@ -250,8 +183,8 @@ void ComputeGRFLOWNetwork::set_inside(double &volume)
 
   if (region) {
     region->prematch();
-    if (volume_str) {
-      volume = eval(volume_str, "volume");
+    if (!opt.volume.empty()) {
+      volume = eval(opt.volume.c_str(), "volume");
     } else {
       const double lo[3] = {MAX(region->extent_xlo, domain->boxlo[0]),
                             MAX(region->extent_ylo, domain->boxlo[1]),
@@ -264,13 +197,12 @@ void ComputeGRFLOWNetwork::set_inside(double &volume)
     for (int i = 0; i < nlocal; i++)
       inside[i] = ((mask[i] & groupbit) && region->match(x[i][0], x[i][1], x[i][2])) ? 1.0 : 0.0;
   } else {
-    const double zlo = zlo_str ? eval(zlo_str, "zlimits") : domain->boxlo[2];
-    const double zhi = zhi_str ? eval(zhi_str, "zlimits") : domain->boxhi[2];
+    const double zlo = opt.zlo.empty() ? domain->boxlo[2] : eval(opt.zlo.c_str(), "zlimits");
+    const double zhi = opt.zhi.empty() ? domain->boxhi[2] : eval(opt.zhi.c_str(), "zlimits");
     if (!(zhi > zlo))
       error->all(FLERR, "Compute grflow/network zlimits must have zlo < zhi, got {} {}", zlo, zhi);
-    const double half = 0.5 * slab * (zhi - zlo);
-    const double zmid = 0.5 * (zlo + zhi);
-    const double lo = zmid - half, hi = zmid + half;
+    double lo, hi;
+    opt.slab_bounds(zlo, zhi, lo, hi);
     volume = domain->xprd * domain->yprd * (hi - lo);
     // between reneighborings an atom may be up to half the skin outside a
     // periodic box: use the image of its centre inside the box
@@ -306,12 +238,18 @@ void ComputeGRFLOWNetwork::compute_vector()
   const double volume = refresh_ghosts_and_inside();
   // per processor: stress sums sum l (x) f (9), fabric sums sum n (x) n (9),
   // particles inside, floaters, contact ends, histogram of contact numbers
-  std::vector<double> local(SUMS_HIST + cmax + 1, 0.0), total(local.size());
-  sum_pair_contacts(&local[SUMS_STRESS], &local[SUMS_FABRIC]);
-  sum_wall_contacts(&local[SUMS_STRESS], &local[SUMS_FABRIC]);
+  std::vector<double> local(GRFLOW::NetworkSums::size(opt.cmax), 0.0), total(local.size());
+  sum_pair_contacts(local.data());
+  sum_wall_contacts(local.data());
   count_particles(local.data());
   MPI_Allreduce(local.data(), total.data(), (int) local.size(), MPI_DOUBLE, MPI_SUM, world);
-  derive(total.data(), volume);
+  GRFLOW::derive_network(total.data(), volume, opt.tau_a, opt.tau_b, opt.cmax,
+                         opt.p0flag ? opt.p0 : 0.0, vector);
+  // p0 first: the first positive pressure (r_u = 1 - p/p0 needs p0 > 0)
+  if (opt.p0first && !opt.p0flag && vector[PRESS] > 0.0) {
+    set_p0(vector[PRESS]);
+    vector[RU] = 1.0 - vector[PRESS] / opt.p0;
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -384,7 +322,7 @@ double ComputeGRFLOWNetwork::refresh_ghosts_and_inside()
    from ghosts to owners with newton on)
 ------------------------------------------------------------------------- */
 
-void ComputeGRFLOWNetwork::sum_pair_contacts(double *sig, double *fab)
+void ComputeGRFLOWNetwork::sum_pair_contacts(double *sums)
 {
   Pair *pair = force->pair;
   NeighList *list = pair->list;
@@ -409,10 +347,9 @@ void ComputeGRFLOWNetwork::sum_pair_contacts(double *sig, double *fab)
       j &= NEIGHMASK;
       if (factor_lj == 0.0) continue;
 
-      // with newton off a pair with a ghost is listed by both owners:
-      // each side counts only its own particle
-      const bool use_i = inside[i] > 0.0;
-      const bool use_j = inside[j] > 0.0 && (j < nlocal || newton_pair);
+      bool use_i, use_j;
+      GRFLOW::NetworkSums::count_ends(inside[i] > 0.0, inside[j] > 0.0, j < nlocal,
+                                      newton_pair != 0, use_i, use_j);
       if (!use_i && !use_j) continue;
 
       const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
@@ -428,23 +365,10 @@ void ComputeGRFLOWNetwork::sum_pair_contacts(double *sig, double *fab)
       const double n[3] = {del[0] / r, del[1] / r, del[2] / r};
       const double f[3] = {fpair * del[0] + svector[0], fpair * del[1] + svector[1],
                            fpair * del[2] + svector[2]};
-      // the contact law's arms a - delta/2 (the kernel's contact_arm)
-      const double delta = radsum - r;
-      double arm = 0.0;
-      if (use_i) {
-        ncontact[i] += 1.0;
-        arm += GRFLOW::contact_arm(radius[i], delta);
-      }
-      if (use_j) {
-        ncontact[j] += 1.0;
-        arm += GRFLOW::contact_arm(radius[j], delta);
-      }
-      const double ends = (use_i ? 1.0 : 0.0) + (use_j ? 1.0 : 0.0);
-      for (int a = 0; a < 3; a++)
-        for (int b = 0; b < 3; b++) {
-          sig[3 * a + b] += arm * n[a] * f[b];
-          fab[3 * a + b] += ends * n[a] * n[b];
-        }
+      if (use_i) ncontact[i] += 1.0;
+      if (use_j) ncontact[j] += 1.0;
+      GRFLOW::NetworkSums::add_pair_contact(sums, n, f, radsum - r, radius[i], radius[j], use_i,
+                                            use_j);
     }
   }
 
@@ -459,7 +383,7 @@ void ComputeGRFLOWNetwork::sum_pair_contacts(double *sig, double *fab)
    ones its post_force() recorded on this step): n is the wall normal
 ------------------------------------------------------------------------- */
 
-void ComputeGRFLOWNetwork::sum_wall_contacts(double *sig, double *fab)
+void ComputeGRFLOWNetwork::sum_wall_contacts(double *sums)
 {
   const int nlocal = atom->nlocal;
   for (auto *wfix : walls)
@@ -471,15 +395,14 @@ void ComputeGRFLOWNetwork::sum_wall_contacts(double *sig, double *fab)
         const double *fw = wfix->contact_force(i, w);
         const double nz = wfix->normal_sign(w);
         ncontact[i] += 1.0;
-        for (int b = 0; b < 3; b++) sig[3 * 2 + b] += arm * nz * fw[b];
-        fab[3 * 2 + 2] += 1.0;
+        GRFLOW::NetworkSums::add_wall_contact(sums, nz, fw, arm);
       }
     }
 }
 
 /* ----------------------------------------------------------------------
    per owned particle inside: the count, floaters, contact ends and the
-   histogram of contact numbers (sums[SUMS_NP...])
+   histogram of contact numbers
 ------------------------------------------------------------------------- */
 
 void ComputeGRFLOWNetwork::count_particles(double *sums)
@@ -487,85 +410,8 @@ void ComputeGRFLOWNetwork::count_particles(double *sums)
   const int nlocal = atom->nlocal;
   for (int i = 0; i < nlocal; i++) {
     if (inside[i] <= 0.0) continue;
-    const int c = (int) ncontact[i];
-    sums[SUMS_NP] += 1.0;
-    if (c == 0) sums[SUMS_FLOAT] += 1.0;
-    sums[SUMS_ENDS] += c;
-    sums[SUMS_HIST + MIN(c, cmax)] += 1.0;
+    GRFLOW::NetworkSums::add_particle(sums, (int) ncontact[i], opt.cmax);
   }
-}
-
-/* ----------------------------------------------------------------------
-   the output vector from the sums over all processors
-------------------------------------------------------------------------- */
-
-void ComputeGRFLOWNetwork::derive(const double *total, double volume)
-{
-  double s[3][3], sym[3][3], fabric[3][3];
-  for (int a = 0; a < 3; a++)
-    for (int b = 0; b < 3; b++) {
-      s[a][b] = total[SUMS_STRESS + 3 * a + b] / volume;
-      fabric[a][b] = total[SUMS_FABRIC + 3 * a + b];
-    }
-  const double np = total[SUMS_NP], nfloat = total[SUMS_FLOAT], csum = total[SUMS_ENDS];
-
-  // stress: LAMMPS order and convention (compression positive,
-  // sigma_ab = sum l_a f_b / V); derived values use the symmetric part
-
-  vector[SXX] = s[0][0];
-  vector[SYY] = s[1][1];
-  vector[SZZ] = s[2][2];
-  vector[SXY] = s[0][1];
-  vector[SXZ] = s[0][2];
-  vector[SYZ] = s[1][2];
-  const double p = (s[0][0] + s[1][1] + s[2][2]) / 3.0;
-  double ss = 0.0;
-  for (int a = 0; a < 3; a++)
-    for (int b = 0; b < 3; b++) {
-      sym[a][b] = 0.5 * (s[a][b] + s[b][a]) - (a == b ? p : 0.0);    // deviatoric
-      ss += sym[a][b] * sym[a][b];
-    }
-  vector[PRESS] = p;
-  vector[TAU] = -0.5 * (s[tau_a][tau_b] + s[tau_b][tau_a]);
-  vector[QDEV] = sqrt(1.5 * ss);
-  vector[SNORM] = sqrt(ss);
-  // p0 first: the first positive pressure (r_u = 1 - p/p0 needs p0 > 0)
-  if (p0first && !p0flag && p > 0.0) set_p0(p);
-  vector[RU] = p0flag ? 1.0 - p / p0 : 0.0;
-
-  // contacts
-
-  vector[NP] = np;
-  vector[NFLOAT] = nfloat;
-  vector[NCONTACT] = 0.5 * csum;
-  vector[ZG] = (np - nfloat > 0.0) ? csum / (np - nfloat) : 0.0;
-  vector[ZPLAIN] = (np > 0.0) ? csum / np : 0.0;
-
-  // fabric F = <n n> over contact ends, a = 15/2 dev F,
-  // a_c = sign(a:s) sqrt(3/2 a:a)
-
-  double an[3][3], aa = 0.0, as = 0.0;
-  for (int a = 0; a < 3; a++)
-    for (int b = 0; b < 3; b++) {
-      const double fn = (csum > 0.0) ? fabric[a][b] / csum : 0.0;
-      an[a][b] = (csum > 0.0) ? 7.5 * (fn - (a == b ? 1.0 / 3.0 : 0.0)) : 0.0;
-    }
-  for (int a = 0; a < 3; a++)
-    for (int b = 0; b < 3; b++) {
-      aa += an[a][b] * an[a][b];
-      as += an[a][b] * sym[a][b];
-    }
-  const double sc = (aa > 0.0 && ss > 0.0) ? as / (sqrt(aa) * sqrt(ss)) : 0.0;
-  vector[SC] = sc;
-  vector[AC] = (sc < 0.0 ? -1.0 : 1.0) * sqrt(1.5 * aa);
-  vector[AXX] = an[0][0];
-  vector[AYY] = an[1][1];
-  vector[AZZ] = an[2][2];
-  vector[AXY] = an[0][1];
-  vector[AXZ] = an[0][2];
-  vector[AYZ] = an[1][2];
-  vector[VOLUME] = volume;
-  for (int c = 0; c <= cmax; c++) vector[PC0 + c] = (np > 0.0) ? total[SUMS_HIST + c] / np : 0.0;
 }
 
 /* ---------------------------------------------------------------------- */

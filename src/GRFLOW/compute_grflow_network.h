@@ -21,14 +21,16 @@ ComputeStyle(grflow/network,ComputeGRFLOWNetwork);
 #define LMP_COMPUTE_GRFLOW_NETWORK_H
 
 #include "compute.h"
+#include "grflow_network.h"
 
 #include <string>
-
 #include <vector>
 
 namespace LAMMPS_NS {
 
-class ComputeGRFLOWNetwork : public Compute {
+// the positions of the output vector: ComputeGRFLOWNetwork::SXX, ... PC0
+// (GRFLOW::NetworkLayout, shared with the LIGGGHTS build)
+class ComputeGRFLOWNetwork : public Compute, public GRFLOW::NetworkLayout {
  public:
   ComputeGRFLOWNetwork(class LAMMPS *, int, char **);
   ~ComputeGRFLOWNetwork() override;
@@ -47,32 +49,16 @@ class ComputeGRFLOWNetwork : public Compute {
   // reference pressure for r_u, for fixes that capture it (e.g. when shear starts)
   void set_p0(double value)
   {
-    p0 = value;
-    p0flag = 1;
+    opt.p0 = value;
+    opt.p0flag = true;
   }
   // true if the command gave the p0 keyword (then a fix must not set p0:
   // each p0 has one owner)
-  bool has_p0_keyword() const { return p0_keyword; }
-
-  // positions of the output vector entries (0-based)
-  // clang-format off
-  enum {
-    SXX, SYY, SZZ, SXY, SXZ, SYZ, PRESS, TAU, QDEV, SNORM, RU, NP, NFLOAT, NCONTACT, ZG,
-    ZPLAIN, AC, SC, AXX, AYY, AZZ, AXY, AXZ, AYZ, VOLUME, PC0
-  };
-  // clang-format on
+  bool has_p0_keyword() const { return opt.p0_keyword; }
 
  private:
-  int cmax;                   // P_c for c = 0..cmax (last bin: cmax or more)
-  int tau_a, tau_b;           // tau = -(sigma_ab + sigma_ba)/2
-  double slab;                // central fraction of the height (no region)
-  char *zlo_str, *zhi_str;    // sample bounds in z: number or v_name
-  char *idregion;
+  GRFLOW::NetworkOptions opt;    // the keywords (grflow_network.h)
   class Region *region;
-  char *volume_str;    // volume of a non-block region: number or v_name
-  double p0;
-  int p0flag, p0first;
-  bool p0_keyword;
 
   std::vector<class FixGRFLOWWall *> walls;
 
@@ -81,21 +67,16 @@ class ComputeGRFLOWNetwork : public Compute {
   double *ncontact;    // force-bearing contacts per atom
   int commflag;
 
-  // the sums of compute_vector(), per processor and then over all: stress
-  // sum l (x) f (9), fabric sum n (x) n (9), particles inside, floaters,
-  // contact ends, histogram of contact numbers (cmax + 1)
-  enum { SUMS_STRESS = 0, SUMS_FABRIC = 9, SUMS_NP = 18, SUMS_FLOAT, SUMS_ENDS, SUMS_HIST };
-
   void check_setup();
   double eval(const char *, const char *);
   void set_inside(double &volume);
   void require_current_contacts();
   void grow_peratom();
   double refresh_ghosts_and_inside();
-  void sum_pair_contacts(double *sig, double *fab);
-  void sum_wall_contacts(double *sig, double *fab);
+  // the sums of compute_vector() (GRFLOW::NetworkSums), per processor
+  void sum_pair_contacts(double *sums);
+  void sum_wall_contacts(double *sums);
   void count_particles(double *sums);
-  void derive(const double *total, double volume);
 };
 
 }    // namespace LAMMPS_NS

@@ -1,0 +1,301 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   The contact-network quantities of compute grflow/network, host-free:
+   the sums over the contacts and particles of a sub-volume (Eq. 1 stress
+   sum l (x) f, fabric sum n (x) n, particle and contact counts, histogram
+   of contact numbers) and what is derived from their totals over all
+   processors (stress, p, tau, q, r_u, z_g, P_c, fabric anisotropy a_c),
+   in the layout of the compute's output vector.  The hosts find the
+   contacts, decide which ends lie inside, and add up over processors.
+   Header only, no host types.  Equations: doc/compute_grflow_network.rst.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_GRFLOW_NETWORK_H
+#define LMP_GRFLOW_NETWORK_H
+
+#include "grflow_contact.h"
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <sstream>
+#include <string>
+
+namespace LAMMPS_NS {
+namespace GRFLOW {
+
+  // a number as LAMMPS's messages print it: the shortest form that reads
+  // back to the same value
+  static inline std::string format_number(double value)
+  {
+    std::ostringstream out;
+    for (int digits = 1; digits <= std::numeric_limits<double>::max_digits10; digits++) {
+      out.str("");
+      out.precision(digits);
+      out << value;
+      std::istringstream in(out.str());
+      double back = 0.0;
+      if ((in >> back) && back == value) break;
+    }
+    return out.str();
+  }
+
+  /* ----------------------------------------------------------------------
+     the keywords of compute grflow/network, host-free: region ID, slab f,
+     zlimits zlo zhi, volume V, shear ab, p0 value|first, cmax c.  The
+     host reads numbers and reports errors:
+       host.number(const char *) -> double, host.integer(const char *) -> int
+       host.missing(const std::string &cmd)   (no return)
+       host.fail(const std::string &message)  (no return)
+     Region IDs, variables (v_name) and volumes are checked by the host.
+  ------------------------------------------------------------------------- */
+
+  struct NetworkOptions {
+    int cmax = 12;
+    int tau_a = 0, tau_b = 2;    // tau = -(sigma_ab + sigma_ba)/2
+    double slab = 0.8;           // central fraction of the height (no region)
+    std::string region;          // empty: the slab of zlimits (or of the box)
+    std::string zlo, zhi;        // sample bounds in z: number or v_name; empty: the box
+    std::string volume;          // volume of a non-block region: number or v_name
+    bool p0_keyword = false;     // p0 given: no fix may set it (one owner)
+    bool p0first = false;        // p0 first: the first positive pressure
+    bool p0flag = false;         // p0 is set
+    double p0 = 0.0;
+
+    template <class Host> void parse(int narg, char **arg, int first, Host &host)
+    {
+      int iarg = first;
+      while (iarg < narg) {
+        const std::string kw = arg[iarg];
+        static const char *const known[] = {"region", "slab", "zlimits", "volume",
+                                            "shear",  "p0",   "cmax"};
+        bool is_known = false;
+        for (const char *k : known) is_known = is_known || kw == k;
+        if (!is_known) host.fail("Unknown compute grflow/network keyword: " + kw);
+        const int nvalues = (kw == "zlimits") ? 2 : 1;
+        if (iarg + 1 + nvalues > narg) host.missing("compute grflow/network " + kw);
+        const char *value = arg[iarg + 1];
+        if (kw == "region") {
+          region = value;
+        } else if (kw == "slab") {
+          slab = host.number(value);
+          if (slab <= 0.0 || slab > 1.0)
+            host.fail("Compute grflow/network slab must be in (0,1], got " + format_number(slab));
+        } else if (kw == "zlimits") {
+          zlo = value;
+          zhi = arg[iarg + 2];
+        } else if (kw == "volume") {
+          volume = value;
+        } else if (kw == "shear") {
+          const std::string c = value;
+          const int a = c.size() == 2 ? c[0] - 'x' : -1;
+          const int b = c.size() == 2 ? c[1] - 'x' : -1;
+          if (a < 0 || a > 2 || b < 0 || b > 2 || a == b)
+            host.fail("Compute grflow/network shear must be two different axes (xy, xz, yz, "
+                      "...), got " +
+                      c);
+          tau_a = a;
+          tau_b = b;
+        } else if (kw == "p0") {
+          p0_keyword = true;
+          if (strcmp(value, "first") == 0) {
+            p0first = true;
+            p0flag = false;
+          } else {
+            p0 = host.number(value);
+            if (p0 <= 0.0)
+              host.fail("Compute grflow/network p0 must be > 0, got " + format_number(p0));
+            p0flag = true;
+            p0first = false;
+          }
+        } else if (kw == "cmax") {
+          cmax = host.integer(value);
+          if (cmax < 1 || cmax > 100)
+            host.fail("Compute grflow/network cmax must be in 1..100, got " + std::to_string(cmax));
+        }
+        iarg += 1 + nvalues;
+      }
+      if (!region.empty() && !zlo.empty())
+        host.fail("Compute grflow/network: use either region or zlimits, not both");
+      if (region.empty() && !volume.empty())
+        host.fail("Compute grflow/network volume goes with region (the slab volume is known)");
+      // numbers now, variables when they are used
+      for (const std::string *str : {&zlo, &zhi, &volume})
+        if (!str->empty() && str->compare(0, 2, "v_") != 0) host.number(str->c_str());
+    }
+
+    // the bounds of the slab of the sample between zlo and zhi
+    void slab_bounds(double zlo_value, double zhi_value, double &lo, double &hi) const
+    {
+      const double half = 0.5 * slab * (zhi_value - zlo_value);
+      const double zmid = 0.5 * (zlo_value + zhi_value);
+      lo = zmid - half;
+      hi = zmid + half;
+    }
+  };
+
+  // positions of the entries of the compute's output vector (0-based):
+  // stress, p, tau, q, |s|, r_u, particles, floaters, contacts, z_g, z
+  // with floaters, a_c, sign, fabric anisotropy tensor, volume, then
+  // P_c for c = 0..cmax
+  struct NetworkLayout {
+    // clang-format off
+    enum {
+      SXX, SYY, SZZ, SXY, SXZ, SYZ, PRESS, TAU, QDEV, SNORM, RU, NP, NFLOAT, NCONTACT, ZG,
+      ZPLAIN, AC, SC, AXX, AYY, AZZ, AXY, AXZ, AYZ, VOLUME, PC0
+    };
+    // clang-format on
+    static int size(int cmax) { return PC0 + cmax + 1; }
+  };
+
+  // the sums of one sub-volume, in one array of size(cmax) doubles
+  struct NetworkSums {
+    enum { STRESS = 0, FABRIC = 9, NP = 18, FLOAT, ENDS, HIST };
+    static int size(int cmax) { return HIST + cmax + 1; }
+
+    // a particle-particle contact with unit normal n (from j to i) and
+    // force f on i: arm is the sum of the arms (a - delta/2) of the ends
+    // inside, ends their number (1 or 2)
+    static void add_contact(double *sums, const double *n, const double *f, double arm, double ends)
+    {
+      for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 3; b++) {
+          sums[STRESS + 3 * a + b] += arm * n[a] * f[b];
+          sums[FABRIC + 3 * a + b] += ends * n[a] * n[b];
+        }
+    }
+
+    // a particle-particle contact with overlap delta between particles of
+    // radii radi, radj, counted at the ends use_i, use_j (the ends inside
+    // that this processor counts, see count_ends())
+    static void add_pair_contact(double *sums, const double *n, const double *f, double delta,
+                                 double radi, double radj, bool use_i, bool use_j)
+    {
+      // the contact law's arms a - delta/2 (the kernel's contact_arm)
+      double arm = 0.0;
+      if (use_i) arm += contact_arm(radi, delta);
+      if (use_j) arm += contact_arm(radj, delta);
+      const double ends = (use_i ? 1.0 : 0.0) + (use_j ? 1.0 : 0.0);
+      add_contact(sums, n, f, arm, ends);
+    }
+
+    // which ends of a listed pair (i owned, j owned or ghost) this
+    // processor counts: those inside; with newton off a pair with a ghost
+    // is listed by both owners, and each counts only its own particle
+    static void count_ends(bool inside_i, bool inside_j, bool j_owned, bool newton_pair,
+                           bool &use_i, bool &use_j)
+    {
+      use_i = inside_i;
+      use_j = inside_j && (j_owned || newton_pair);
+    }
+
+    // a contact of a particle inside with a flat wall normal to z (nz =
+    // +1 below, -1 above): arm a - delta/2, force fw on the particle
+    static void add_wall_contact(double *sums, double nz, const double *fw, double arm)
+    {
+      for (int b = 0; b < 3; b++) sums[STRESS + 3 * 2 + b] += arm * nz * fw[b];
+      sums[FABRIC + 3 * 2 + 2] += 1.0;
+    }
+
+    // a particle inside with c force-bearing contacts
+    static void add_particle(double *sums, int c, int cmax)
+    {
+      sums[NP] += 1.0;
+      if (c == 0) sums[FLOAT] += 1.0;
+      sums[ENDS] += c;
+      sums[HIST + (c < cmax ? c : cmax)] += 1.0;
+    }
+  };
+
+  /* ----------------------------------------------------------------------
+     the output vector (NetworkLayout) from the sums over all processors
+     and the volume of the sub-volume; tau = -(s_ab + s_ba)/2 of the axes
+     tau_a, tau_b; r_u = 1 - p/p0 if p0 > 0, else 0
+  ------------------------------------------------------------------------- */
+
+  static inline void derive_network(const double *total, double volume, int tau_a, int tau_b,
+                                    int cmax, double p0, double *vector)
+  {
+    typedef NetworkSums S;
+    typedef NetworkLayout L;
+    double s[3][3], sym[3][3], fabric[3][3];
+    for (int a = 0; a < 3; a++)
+      for (int b = 0; b < 3; b++) {
+        s[a][b] = total[S::STRESS + 3 * a + b] / volume;
+        fabric[a][b] = total[S::FABRIC + 3 * a + b];
+      }
+    const double np = total[S::NP], nfloat = total[S::FLOAT], csum = total[S::ENDS];
+
+    // stress: LAMMPS order and convention (compression positive,
+    // sigma_ab = sum l_a f_b / V); derived values use the symmetric part
+
+    vector[L::SXX] = s[0][0];
+    vector[L::SYY] = s[1][1];
+    vector[L::SZZ] = s[2][2];
+    vector[L::SXY] = s[0][1];
+    vector[L::SXZ] = s[0][2];
+    vector[L::SYZ] = s[1][2];
+    const double p = (s[0][0] + s[1][1] + s[2][2]) / 3.0;
+    double ss = 0.0;
+    for (int a = 0; a < 3; a++)
+      for (int b = 0; b < 3; b++) {
+        sym[a][b] = 0.5 * (s[a][b] + s[b][a]) - (a == b ? p : 0.0);    // deviatoric
+        ss += sym[a][b] * sym[a][b];
+      }
+    vector[L::PRESS] = p;
+    vector[L::TAU] = -0.5 * (s[tau_a][tau_b] + s[tau_b][tau_a]);
+    vector[L::QDEV] = sqrt(1.5 * ss);
+    vector[L::SNORM] = sqrt(ss);
+    vector[L::RU] = (p0 > 0.0) ? 1.0 - p / p0 : 0.0;
+
+    // contacts
+
+    vector[L::NP] = np;
+    vector[L::NFLOAT] = nfloat;
+    vector[L::NCONTACT] = 0.5 * csum;
+    vector[L::ZG] = (np - nfloat > 0.0) ? csum / (np - nfloat) : 0.0;
+    vector[L::ZPLAIN] = (np > 0.0) ? csum / np : 0.0;
+
+    // fabric F = <n n> over contact ends, a = 15/2 dev F,
+    // a_c = sign(a:s) sqrt(3/2 a:a)
+
+    double an[3][3], aa = 0.0, as = 0.0;
+    for (int a = 0; a < 3; a++)
+      for (int b = 0; b < 3; b++) {
+        const double fn = (csum > 0.0) ? fabric[a][b] / csum : 0.0;
+        an[a][b] = (csum > 0.0) ? 7.5 * (fn - (a == b ? 1.0 / 3.0 : 0.0)) : 0.0;
+      }
+    for (int a = 0; a < 3; a++)
+      for (int b = 0; b < 3; b++) {
+        aa += an[a][b] * an[a][b];
+        as += an[a][b] * sym[a][b];
+      }
+    const double sc = (aa > 0.0 && ss > 0.0) ? as / (sqrt(aa) * sqrt(ss)) : 0.0;
+    vector[L::SC] = sc;
+    vector[L::AC] = (sc < 0.0 ? -1.0 : 1.0) * sqrt(1.5 * aa);
+    vector[L::AXX] = an[0][0];
+    vector[L::AYY] = an[1][1];
+    vector[L::AZZ] = an[2][2];
+    vector[L::AXY] = an[0][1];
+    vector[L::AXZ] = an[0][2];
+    vector[L::AYZ] = an[1][2];
+    vector[L::VOLUME] = volume;
+    for (int c = 0; c <= cmax; c++) vector[L::PC0 + c] = (np > 0.0) ? total[S::HIST + c] / np : 0.0;
+  }
+
+}    // namespace GRFLOW
+}    // namespace LAMMPS_NS
+
+#endif
