@@ -27,6 +27,7 @@
 
 #include "grflow_contact.h"
 #include "grflow_network.h"
+#include "grflow_restart.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -53,25 +54,13 @@ enum { INSIDE, NCONTACTS };
 
 /* ---------------------------------------------------------------------- */
 
-namespace {
-// how the shared keyword parser (GRFLOW::NetworkOptions) reads numbers and
-// reports errors in LAMMPS
-struct ParseHost {
-  LAMMPS *lmp;
-  double number(const char *s) { return utils::numeric(FLERR, s, false, lmp); }
-  int integer(const char *s) { return utils::inumeric(FLERR, s, false, lmp); }
-  void missing(const std::string &cmd) { utils::missing_cmd_args(FLERR, cmd, lmp->error); }
-  void fail(const std::string &message) { lmp->error->all(FLERR, message); }
-};
-}    // namespace
-
 ComputeGRFLOWNetwork::ComputeGRFLOWNetwork(LAMMPS *lmp, int narg, char **arg) :
     Compute(lmp, narg, arg), region(nullptr), inside(nullptr), ncontact(nullptr)
 {
   nmax = 0;
   commflag = INSIDE;
 
-  ParseHost host{lmp};
+  GRFLOW::FixHost host{lmp};
   opt.parse(narg, arg, 3, host);
   if (!opt.region.empty() && !domain->get_region_by_id(opt.region))
     error->all(FLERR, "Region {} for compute grflow/network does not exist", opt.region);
@@ -186,13 +175,9 @@ void ComputeGRFLOWNetwork::set_inside(double &volume)
     if (!opt.volume.empty()) {
       volume = eval(opt.volume.c_str(), "volume");
     } else {
-      const double lo[3] = {MAX(region->extent_xlo, domain->boxlo[0]),
-                            MAX(region->extent_ylo, domain->boxlo[1]),
-                            MAX(region->extent_zlo, domain->boxlo[2])};
-      const double hi[3] = {MIN(region->extent_xhi, domain->boxhi[0]),
-                            MIN(region->extent_yhi, domain->boxhi[1]),
-                            MIN(region->extent_zhi, domain->boxhi[2])};
-      volume = MAX(hi[0] - lo[0], 0.0) * MAX(hi[1] - lo[1], 0.0) * MAX(hi[2] - lo[2], 0.0);
+      const double lo[3] = {region->extent_xlo, region->extent_ylo, region->extent_zlo};
+      const double hi[3] = {region->extent_xhi, region->extent_yhi, region->extent_zhi};
+      volume = GRFLOW::NetworkVolume::clipped_box(lo, hi, domain->boxlo, domain->boxhi);
     }
     for (int i = 0; i < nlocal; i++)
       inside[i] = ((mask[i] & groupbit) && region->match(x[i][0], x[i][1], x[i][2])) ? 1.0 : 0.0;
@@ -204,20 +189,8 @@ void ComputeGRFLOWNetwork::set_inside(double &volume)
     double lo, hi;
     opt.slab_bounds(zlo, zhi, lo, hi);
     volume = domain->xprd * domain->yprd * (hi - lo);
-    // between reneighborings an atom may be up to half the skin outside a
-    // periodic box: use the image of its centre inside the box
-    const int zperiodic = domain->zperiodic;
-    const double boxlo = domain->boxlo[2], boxhi = domain->boxhi[2], zprd = domain->zprd;
-    for (int i = 0; i < nlocal; i++) {
-      double z = x[i][2];
-      if (zperiodic) {
-        if (z < boxlo)
-          z += zprd;
-        else if (z >= boxhi)
-          z -= zprd;
-      }
-      inside[i] = ((mask[i] & groupbit) && z >= lo && z < hi) ? 1.0 : 0.0;
-    }
+    GRFLOW::NetworkVolume::flag_slab(x, mask, groupbit, nlocal, lo, hi, domain->zperiodic != 0,
+                                     domain->boxlo[2], domain->boxhi[2], domain->zprd, inside);
   }
   if (!(volume > 0.0) || !std::isfinite(volume))
     error->all(FLERR, "Compute grflow/network sub-volume is {}: must be finite and > 0", volume);
@@ -385,19 +358,7 @@ void ComputeGRFLOWNetwork::sum_pair_contacts(double *sums)
 
 void ComputeGRFLOWNetwork::sum_wall_contacts(double *sums)
 {
-  const int nlocal = atom->nlocal;
-  for (auto *wfix : walls)
-    for (int i = 0; i < nlocal; i++) {
-      if (inside[i] <= 0.0) continue;
-      for (int w = 0; w < FixGRFLOWWall::NWALL; w++) {
-        const double arm = wfix->contact_arm(i, w);
-        if (arm <= 0.0) continue;
-        const double *fw = wfix->contact_force(i, w);
-        const double nz = wfix->normal_sign(w);
-        ncontact[i] += 1.0;
-        GRFLOW::NetworkSums::add_wall_contact(sums, nz, fw, arm);
-      }
-    }
+  GRFLOW::add_wall_contacts(walls, inside, atom->nlocal, ncontact, sums);
 }
 
 /* ----------------------------------------------------------------------
@@ -407,11 +368,7 @@ void ComputeGRFLOWNetwork::sum_wall_contacts(double *sums)
 
 void ComputeGRFLOWNetwork::count_particles(double *sums)
 {
-  const int nlocal = atom->nlocal;
-  for (int i = 0; i < nlocal; i++) {
-    if (inside[i] <= 0.0) continue;
-    GRFLOW::NetworkSums::add_particle(sums, (int) ncontact[i], opt.cmax);
-  }
+  GRFLOW::add_particles(inside, ncontact, atom->nlocal, opt.cmax, sums);
 }
 
 /* ---------------------------------------------------------------------- */

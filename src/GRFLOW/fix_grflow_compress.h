@@ -21,11 +21,14 @@ FixStyle(grflow/compress,FixGRFLOWCompress);
 #define LMP_FIX_GRFLOW_COMPRESS_H
 
 #include "fix.h"
-#include "grflow_overshoot.h"
+#include "grflow_servo.h"
 
 namespace LAMMPS_NS {
 
-class FixGRFLOWCompress : public Fix {
+// the positions of the output vector: FixGRFLOWCompress::CONVERGED, ...
+// FACTOR_Z (GRFLOW::CompressLayout, shared with the LIGGGHTS build); the
+// servo itself is GRFLOW::StressServo (grflow_servo.h)
+class FixGRFLOWCompress : public Fix, public GRFLOW::CompressLayout {
  public:
   FixGRFLOWCompress(class LAMMPS *, int, char **);
   ~FixGRFLOWCompress() override;
@@ -38,41 +41,20 @@ class FixGRFLOWCompress : public Fix {
   void write_restart(FILE *) override;
   void restart(char *) override;
 
-  // output vector (0-based)
-  // clang-format off
-  enum {
-    CONVERGED, SXX, SYY, SZZ, ERRMAX, KE, EEL, RATIO, RATE_X, RATE_Y, RATE_Z, VOLUME, VOID, LX, LY,
-    HEIGHT, FACTOR_X, FACTOR_Y, FACTOR_Z, NOUT
-  };
-  // clang-format on
-
  private:
-  char *id_wall, *id_network, *id_pe;
-  char *elastic_var;    // equal-style variable giving the elastic energy, or null
+  GRFLOW::CompressSettings settings;    // the arguments
+  GRFLOW::StressServo servo;            // rates, gain factors (restart), last measurements
+  std::string id_pe;                    // the internal compute pe, "" with elastic
   int ivar_elastic;
   class FixGRFLOWWall *wall;
   class ComputeGRFLOWNetwork *network;
   class Compute *pe;
-  double p_target, rate_max, gain, tol, ke_ratio_max;
-  int servo_every;
   double dt;
   double vsolid;
 
-  // servo state (restart): strain rates of x, y and the wall gap
-  double rate[3];
-  int started;
-
-  // overshoot damping (restart): per axis the gain factor, the error of
-  // the last update and the number of undamped overshoots in a row
-  GRFLOW::OvershootDamping damping[3];    // one per axis
-
-  // outputs, measured on the last servo step or at setup
-  double sigma[3], errmax, ke, eel;
-
   void measure();
-  void servo();
+  void update_servo();
   void schedule_energy(bigint step);
-  void damp_overshoot(int, double);
   void drive_walls();
   void deform_box();
   double height() const;

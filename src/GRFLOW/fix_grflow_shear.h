@@ -21,14 +21,16 @@ FixStyle(grflow/shear,FixGRFLOWShear);
 #define LMP_FIX_GRFLOW_SHEAR_H
 
 #include "fix.h"
-#include "grflow_cycle_count.h"
+#include "grflow_shear_rule.h"
 
 namespace LAMMPS_NS {
 
-class FixGRFLOWShear : public Fix {
+// the positions of the output vector: FixGRFLOWShear::DIRECTION, ... EVENT
+// (GRFLOW::ShearLayout, shared with the LIGGGHTS build); the rule itself
+// is GRFLOW::ShearProtocol (grflow_shear_rule.h)
+class FixGRFLOWShear : public Fix, public GRFLOW::ShearLayout {
  public:
   FixGRFLOWShear(class LAMMPS *, int, char **);
-  ~FixGRFLOWShear() override;
   int setmask() override;
   void init() override;
   void setup(int) override;
@@ -39,44 +41,16 @@ class FixGRFLOWShear : public Fix {
   void write_restart(FILE *) override;
   void restart(char *) override;
 
-  // output vector (0-based)
-  // clang-format off
-  enum {
-    DIRECTION, REVERSALS, XWALL, GAMMA, TAU, PRESS, RU, P0, STEP_IL, TIME_IL, N_IL, N_EVENT,
-    DONE, EVENT, NOUT
-  };
-  // clang-format on
-
  private:
-  char *id_wall, *id_network;
+  GRFLOW::ShearSettings settings;    // the arguments
+  GRFLOW::ShearProtocol state;       // direction, reversals, N, ... (restart)
+  GRFLOW::ShearProgress progress;    // the progress lines' clock
   class FixGRFLOWWall *wall;
   class ComputeGRFLOWNetwork *network;
   int iglue, gluebit;
-  std::string glue_name;
-  double vx, tau_amp, ru_liq;
-  int check_every;
-  double stop_cycles_after_il, stop_cycles, stop_gamma;
   double dt;
 
-  // protocol state (restart)
-  int started, direction;
-  bigint reversals, step_il;
-  double p0;
-  int await_zero;              // a reversal happened, tau has not crossed zero since
-  GRFLOW::CycleCount count;    // N, and the time of initial liquefaction (grflow_cycle_count.h)
-
-  // events and progress
-  bigint event_step;
-  int event_kind;
-  int progress;
-  double wall_start, wall_last;
-  bigint step_last;
-
-  // last check
-  double tau, press, ru;
-
   void check(bool decide = true);
-  void report();
   void drive_wall();
   double height() const;
   double sim_time() const;

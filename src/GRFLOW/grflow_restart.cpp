@@ -17,49 +17,54 @@
 #include "error.h"
 #include "lammps.h"
 
-#include <cmath>
-#include <vector>
-
 using namespace LAMMPS_NS;
+using GRFLOW::FixHost;
 
 void GRFLOW::write_restart_values(LAMMPS *lmp, FILE *fp, int version, const double *values, int n)
 {
-  if (lmp->comm->me != 0) return;
-  std::vector<double> list(n + 3);
-  list[0] = RESTART_TAG;
-  list[1] = version;
-  list[2] = n;
-  for (int k = 0; k < n; k++) list[3 + k] = values[k];
-  const int size = (n + 3) * sizeof(double);
-  fwrite(&size, sizeof(int), 1, fp);
-  fwrite(list.data(), sizeof(double), n + 3, fp);
+  if (lmp->comm->me == 0) write_restart_block(fp, version, values, n);
 }
 
 const double *GRFLOW::read_restart_values(LAMMPS *lmp, const std::string &who, const char *buf,
                                           int current, int count, int &version)
 {
-  const auto *list = (const double *) buf;
-  if (list[0] != RESTART_TAG) {
-    version = 0;
-    return list;
-  }
-  const double v = list[1], n = list[2];
-  if (!(v >= 1.0 && v == std::floor(v)) || v > current)
-    lmp->error->all(FLERR,
-                    "{}: restart data of format version {}; this GRFLOW reads versions up to {} "
-                    "(a newer GRFLOW wrote it, or the file is damaged)",
-                    who, v, current);
-  version = (int) v;
-  if (version == current) {
-    if (n != count)
-      lmp->error->all(FLERR,
-                      "{}: restart data of format version {} hold {} values, expected {}: "
-                      "the file is damaged",
-                      who, version, n, count);
-    for (int k = 0; k < count; k++)
-      if (!std::isfinite(list[3 + k]))
-        lmp->error->all(FLERR, "{}: restart value {} of {} is {}: the file is damaged", who, k + 1,
-                        count, list[3 + k]);
-  }
-  return list + 3;
+  FixHost host{lmp};
+  return read_restart_block(who, buf, current, count, version, host);
+}
+
+/* ---------------------------------------------------------------------- */
+
+double FixHost::number(const char *str, const std::string & /*what*/) const
+{
+  return utils::numeric(FLERR, str, false, lmp);
+}
+
+int FixHost::integer(const char *str, const std::string & /*what*/) const
+{
+  return utils::inumeric(FLERR, str, false, lmp);
+}
+
+bool FixHost::logical(const char *str, const std::string & /*what*/) const
+{
+  return utils::logical(FLERR, str, false, lmp) != 0;
+}
+
+void FixHost::missing(const std::string &cmd) const
+{
+  utils::missing_cmd_args(FLERR, cmd, lmp->error);
+}
+
+void FixHost::fail(const std::string &message) const
+{
+  lmp->error->all(FLERR, message);
+}
+
+void FixHost::warning(const std::string &message) const
+{
+  if (lmp->comm->me == 0) lmp->error->warning(FLERR, message);
+}
+
+std::string FixHost::text(double value) const
+{
+  return fmt::format("{}", value);
 }

@@ -12,16 +12,26 @@
 ------------------------------------------------------------------------- */
 
 /* ----------------------------------------------------------------------
-   The global restart data of the GRFLOW fixes: a header (a tag that marks
-   GRFLOW data, the fix's format version, the number of values), then the
-   values.  LAMMPS passes Fix::restart() the bytes only, not their size:
-   the header lets a fix tell its formats apart and stop with a clear
-   error on data it cannot have written.  Data written before the header
-   existed (format version 0 here) start with a value other than the tag.
+   The LAMMPS side of the GRFLOW fixes' host-free code:
+
+   - their global restart data: the block of grflow_wall.h (a header with
+     a tag that marks GRFLOW data, the fix's format version and the
+     number of values, then the values), written on rank 0, its errors
+     reported through LAMMPS.  LAMMPS passes Fix::restart() the bytes
+     only, not their size: the header lets a fix tell its formats apart
+     and stop with a clear error on data it cannot have written.  Data
+     written before the header existed (format version 0 here) start
+     with a value other than the tag.
+   - FixHost: numbers read and errors reported the LAMMPS way (utils::,
+     fmt), for the argument rules of grflow_shear_rule.h and
+     grflow_servo.h.
+   The LIGGGHTS build has the same (src/LIGGGHTS/grflow_restart.h).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_GRFLOW_RESTART_H
 #define LMP_GRFLOW_RESTART_H
+
+#include "grflow_host.h"
 
 #include <cstdio>
 #include <string>
@@ -31,7 +41,7 @@ class LAMMPS;
 namespace GRFLOW {
 
   // first double of a headed block: no value a GRFLOW fix stores begins so
-  static constexpr double RESTART_TAG = -7.3e301;
+  static constexpr double RESTART_TAG = RESTART_BLOCK_TAG;
 
   // write the header and n values (on rank 0, as Fix::write_restart() does)
   void write_restart_values(LAMMPS *lmp, FILE *fp, int version, const double *values, int n);
@@ -43,6 +53,18 @@ namespace GRFLOW {
   // the header (then buf itself is returned, unchecked).
   const double *read_restart_values(LAMMPS *lmp, const std::string &who, const char *buf,
                                     int current, int count, int &version);
+
+  // the host object of the fixes' host-free rules (grflow_shear_rule.h)
+  struct FixHost {
+    LAMMPS *lmp;
+    double number(const char *str, const std::string &what) const;
+    int integer(const char *str, const std::string &what) const;
+    bool logical(const char *str, const std::string &what) const;
+    void missing(const std::string &cmd) const;
+    void fail(const std::string &message) const;
+    void warning(const std::string &message) const;    // from rank 0
+    std::string text(double value) const;
+  };
 
 }    // namespace GRFLOW
 }    // namespace LAMMPS_NS

@@ -16,14 +16,19 @@
    by every host (LAMMPS: pair_coeff of granular/grflow and fix
    grflow/wall; LIGGGHTS: fix property/global of model grflow): their
    names, the defaults of the paper's Table 1 for those not given, and
-   the check that each is finite, kn > 0 and the others >= 0.  Header
-   only, no host types: the hosts parse and report errors their own way.
+   the check that each is finite, kn > 0 and the others >= 0, and the
+   reading of the coefficient arguments of a command.  Header only, no
+   host types: the hosts read numbers and report errors through a Host
+   object (grflow_host.h).
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_GRFLOW_CONTACT_COEFFS_H
 #define LMP_GRFLOW_CONTACT_COEFFS_H
 
+#include "grflow_host.h"
+
 #include <cmath>
+#include <cstring>
 #include <string>
 
 namespace LAMMPS_NS {
@@ -109,6 +114,78 @@ namespace GRFLOW {
     c.ko = value[KO];
     c.co = value[CO];
     c.muo = value[MUO];
+  }
+
+  /* ----------------------------------------------------------------------
+     contact coefficient arguments, kn cn [kt v] ... [rolling off]
+     [torsion off] (the names, Table 1 defaults and rules of
+     grflow_contact_coeffs.h), read from arg[first] on: returns the index
+     after the last one used.  A word that is no coefficient keyword ends
+     the list if stop_at_unknown, else it is an error.
+  ------------------------------------------------------------------------- */
+
+  // stop with an error naming the first coefficient that breaks a rule;
+  // where: the command (or the source) of the values
+  template <class Host>
+  static inline void check_coeff_values(const std::string &where, const double *value, Host &host)
+  {
+    const char *rule = nullptr;
+    const int k = bad_coeff(value, &rule);
+    if (k < NCOEFF)
+      host.fail(where + ": " + COEFF_NAMES[k] + " " + rule + ", got " + host.text(value[k]));
+  }
+
+  template <class Host>
+  static inline int read_coeff_args(const std::string &cmd, int narg, char **arg, int first,
+                                    bool stop_at_unknown, double *value, Host &host)
+  {
+    if (first + 2 > narg) {
+      host.fail("Incorrect args for " + cmd + ": expected kn cn [keyword value ...]");
+      return narg;
+    }
+    const double kn = host.number(arg[first], cmd + " kn");
+    const double cn = host.number(arg[first + 1], cmd + " cn");
+    default_coeffs(kn, cn, value);
+
+    int iarg = first + 2;
+    while (iarg < narg) {
+      const std::string kw = arg[iarg];
+      const int k = coeff_index(kw);
+      const bool off = (kw == "rolling" || kw == "torsion");
+      if ((k == NCOEFF || k < KT) && !off) {
+        if (stop_at_unknown) break;
+        host.fail("Unknown " + cmd + " keyword: " + kw);
+        return narg;
+      }
+      if (iarg + 2 > narg) {
+        host.fail("Missing value for " + cmd + " keyword " + kw);
+        return narg;
+      }
+      if (off) {
+        if (strcmp(arg[iarg + 1], "off") != 0) {
+          host.fail(cmd + " " + kw + " takes only the value off, not " + arg[iarg + 1]);
+          return narg;
+        }
+        mode_off((kw == "rolling") ? KR : KO, value);
+      } else {
+        value[k] = host.number(arg[iarg + 1], cmd + " " + kw);
+      }
+      iarg += 2;
+    }
+
+    check_coeff_values(cmd, value, host);
+    return iarg;
+  }
+
+  // the value of a velocity_arm keyword: 0 for reduced (a - delta/2), 1 for
+  // full (the radii)
+  template <class Host>
+  static inline int read_velocity_arm(const std::string &cmd, const char *value, Host &host)
+  {
+    if (strcmp(value, "reduced") == 0) return 0;
+    if (strcmp(value, "full") == 0) return 1;
+    host.fail("Unknown " + cmd + " velocity_arm value " + value + ": expected reduced or full");
+    return 0;
   }
 
 }    // namespace GRFLOW

@@ -26,6 +26,8 @@
 #define LMP_GRFLOW_NETWORK_H
 
 #include "grflow_contact.h"
+#include "grflow_host.h"
+#include "grflow_wall.h"
 
 #include <cmath>
 #include <cstring>
@@ -35,22 +37,6 @@
 
 namespace LAMMPS_NS {
 namespace GRFLOW {
-
-  // a number as LAMMPS's messages print it: the shortest form that reads
-  // back to the same value
-  static inline std::string format_number(double value)
-  {
-    std::ostringstream out;
-    for (int digits = 1; digits <= std::numeric_limits<double>::max_digits10; digits++) {
-      out.str("");
-      out.precision(digits);
-      out << value;
-      std::istringstream in(out.str());
-      double back = 0.0;
-      if ((in >> back) && back == value) break;
-    }
-    return out.str();
-  }
 
   /* ----------------------------------------------------------------------
      the keywords of compute grflow/network, host-free: region ID, slab f,
@@ -90,7 +76,7 @@ namespace GRFLOW {
         if (kw == "region") {
           region = value;
         } else if (kw == "slab") {
-          slab = host.number(value);
+          slab = host.number(value, "compute grflow/network slab");
           if (slab <= 0.0 || slab > 1.0)
             host.fail("Compute grflow/network slab must be in (0,1], got " + format_number(slab));
         } else if (kw == "zlimits") {
@@ -114,14 +100,14 @@ namespace GRFLOW {
             p0first = true;
             p0flag = false;
           } else {
-            p0 = host.number(value);
+            p0 = host.number(value, "compute grflow/network p0");
             if (p0 <= 0.0)
               host.fail("Compute grflow/network p0 must be > 0, got " + format_number(p0));
             p0flag = true;
             p0first = false;
           }
         } else if (kw == "cmax") {
-          cmax = host.integer(value);
+          cmax = host.integer(value, "compute grflow/network cmax");
           if (cmax < 1 || cmax > 100)
             host.fail("Compute grflow/network cmax must be in 1..100, got " + std::to_string(cmax));
         }
@@ -133,7 +119,8 @@ namespace GRFLOW {
         host.fail("Compute grflow/network volume goes with region (the slab volume is known)");
       // numbers now, variables when they are used
       for (const std::string *str : {&zlo, &zhi, &volume})
-        if (!str->empty() && str->compare(0, 2, "v_") != 0) host.number(str->c_str());
+        if (!str->empty() && str->compare(0, 2, "v_") != 0)
+          host.number(str->c_str(), "compute grflow/network");
     }
 
     // the bounds of the slab of the sample between zlo and zhi
@@ -218,6 +205,72 @@ namespace GRFLOW {
       sums[HIST + (c < cmax ? c : cmax)] += 1.0;
     }
   };
+
+  /* ----------------------------------------------------------------------
+     the sub-volume and the per-particle sums, over a host's owned atoms
+  ------------------------------------------------------------------------- */
+
+  struct NetworkVolume {
+    // the volume of a box [lo, hi] clipped to the simulation box
+    static double clipped_box(const double *lo, const double *hi, const double *boxlo,
+                              const double *boxhi)
+    {
+      double len[3];
+      for (int d = 0; d < 3; d++) {
+        const double a = lo[d] > boxlo[d] ? lo[d] : boxlo[d];
+        const double b = hi[d] < boxhi[d] ? hi[d] : boxhi[d];
+        len[d] = b - a > 0.0 ? b - a : 0.0;
+      }
+      return len[0] * len[1] * len[2];
+    }
+
+    // inside[i] = 1 for the owned atoms in the group whose centre lies in
+    // the slab lo <= z < hi, else 0; between reneighborings an atom may be
+    // up to half the skin outside a periodic box: the image of its centre
+    // inside the box counts
+    static void flag_slab(double **x, const int *mask, int groupbit, int nlocal, double lo,
+                          double hi, bool zperiodic, double boxlo, double boxhi, double zprd,
+                          double *inside)
+    {
+      for (int i = 0; i < nlocal; i++) {
+        double z = x[i][2];
+        if (zperiodic) {
+          if (z < boxlo)
+            z += zprd;
+          else if (z >= boxhi)
+            z -= zprd;
+        }
+        inside[i] = ((mask[i] & groupbit) && z >= lo && z < hi) ? 1.0 : 0.0;
+      }
+    }
+  };
+
+  // the contacts of owned particles inside with the flat walls of fix
+  // grflow/wall (the force-bearing ones the wall recorded on this step; n
+  // is the wall's normal), counted in ncontact[]
+  template <class Walls>
+  static void add_wall_contacts(const Walls &walls, const double *inside, int nlocal,
+                                double *ncontact, double *sums)
+  {
+    for (auto *wall : walls)
+      for (int i = 0; i < nlocal; i++) {
+        if (inside[i] <= 0.0) continue;
+        for (int w = 0; w < FlatWalls::NWALL; w++) {
+          const double arm = wall->contact_arm(i, w);
+          if (arm <= 0.0) continue;
+          ncontact[i] += 1.0;
+          NetworkSums::add_wall_contact(sums, wall->normal_sign(w), wall->contact_force(i, w), arm);
+        }
+      }
+  }
+
+  // every owned particle inside, with its ncontact[] contacts
+  static inline void add_particles(const double *inside, const double *ncontact, int nlocal,
+                                   int cmax, double *sums)
+  {
+    for (int i = 0; i < nlocal; i++)
+      if (inside[i] > 0.0) NetworkSums::add_particle(sums, (int) ncontact[i], cmax);
+  }
 
   /* ----------------------------------------------------------------------
      the output vector (NetworkLayout) from the sums over all processors

@@ -1,0 +1,125 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   LAMMPS development team: developers@lammps.org
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   What the host-free rules of GRFLOW (src/shared) need from a host
+   (LAMMPS, LIGGGHTS), and the pieces of them that every command uses.
+
+   The rules parse numbers and report errors through a Host object, each
+   host's GRFLOW::FixHost (its grflow_restart.h) or a struct like it:
+     double number(const char *text, const std::string &what)
+       the value of a numeric argument (what names it, e.g. "fix
+       grflow/wall zlo"); reports an error itself if text is no number
+     void missing(const std::string &cmd)    missing arguments (no return)
+     void fail(const std::string &message)   any other error (no return)
+     std::string text(double value)          a number as the host's
+                                             messages print it
+   The code does not rely on missing() and fail() not returning: it stops
+   its work after calling them.
+------------------------------------------------------------------------- */
+
+#ifndef LMP_GRFLOW_HOST_H
+#define LMP_GRFLOW_HOST_H
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS {
+namespace GRFLOW {
+
+  // a number as LAMMPS's messages print it: the shortest form that reads
+  // back to the same value
+  static inline std::string format_number(double value)
+  {
+    std::ostringstream out;
+    for (int digits = 1; digits <= std::numeric_limits<double>::max_digits10; digits++) {
+      out.str("");
+      out.precision(digits);
+      out << value;
+      std::istringstream in(out.str());
+      double back = 0.0;
+      if ((in >> back) && back == value) break;
+    }
+    return out.str();
+  }
+
+  /* ----------------------------------------------------------------------
+     global restart data of a GRFLOW fix: a tag that marks GRFLOW data, the
+     fix's format version, the number of values, then the values (each
+     host's grflow_restart.h writes and reads them on its processors).
+     Data of format 0 (written before the header existed) are the values
+     alone.
+  ------------------------------------------------------------------------- */
+
+  static constexpr double RESTART_BLOCK_TAG = -7.3e301;
+
+  // the bytes a fix's write_restart() writes on rank 0: their size, then
+  // the header and the n values
+  static inline void write_restart_block(FILE *fp, int version, const double *values, int n)
+  {
+    std::vector<double> list(n + 3);
+    list[0] = RESTART_BLOCK_TAG;
+    list[1] = version;
+    list[2] = n;
+    for (int k = 0; k < n; k++) list[3 + k] = values[k];
+    const int size = (n + 3) * sizeof(double);
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(list.data(), sizeof(double), n + 3, fp);
+  }
+
+  // the values of the data buf given to a fix's restart(): for a headed
+  // block, check that its version is at most current and, for the current
+  // version, that it holds count values, all finite; an error naming who
+  // (e.g. "Fix grflow/wall w") otherwise.  version is set to the block's
+  // version, 0 for data without the header (then buf itself is returned,
+  // unchecked).
+  template <class Host>
+  static inline const double *read_restart_block(const std::string &who, const char *buf,
+                                                 int current, int count, int &version, Host &host)
+  {
+    const double *list = (const double *) buf;
+    if (list[0] != RESTART_BLOCK_TAG) {
+      version = 0;
+      return list;
+    }
+    const double v = list[1], n = list[2];
+    if (!(v >= 1.0 && v == std::floor(v)) || v > current) {
+      host.fail(who + ": restart data of format version " + host.text(v) +
+                "; this GRFLOW reads versions up to " + std::to_string(current) +
+                " (a newer GRFLOW wrote it, or the file is damaged)");
+      version = current;
+      return list + 3;
+    }
+    version = (int) v;
+    if (version == current) {
+      if (n != count)
+        host.fail(who + ": restart data of format version " + std::to_string(version) + " hold " +
+                  host.text(n) + " values, expected " + std::to_string(count) +
+                  ": the file is damaged");
+      for (int k = 0; k < count; k++)
+        if (!std::isfinite(list[3 + k]))
+          host.fail(who + ": restart value " + std::to_string(k + 1) + " of " +
+                    std::to_string(count) + " is " + host.text(list[3 + k]) +
+                    ": the file is damaged");
+    }
+    return list + 3;
+  }
+
+}    // namespace GRFLOW
+}    // namespace LAMMPS_NS
+
+#endif
