@@ -328,7 +328,7 @@ void ComputeGRFLOWNetwork::sum_pair_contacts(double *sums)
       pair_geometry(del, sqrt(rsq), radius[i], radius[j], false, g);
       const double vrel[3] = {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]};
       double hist[HIST_SIZE];
-      current_springs(&firsthistory[i][dnum * jj + law.history_offset], step, hist);
+      current_springs(&firsthistory[i][dnum * jj + law.history_offset], step, false, hist);
       ContactForces out;
       contact_forces((*law.coeff)[type[i] * (law.ntypes + 1) + type[j]], g, vrel, omega[i],
                      omega[j], update->dt, false, hist, out);

@@ -26,9 +26,15 @@ namespace GRFLOW {
 
   // the springs of a contact as the law uses them on step `step`: zero if
   // the contact did not touch on the step before (LIGGGHTS keeps the
-  // history of a listed pair that parted: a new touch is a new contact)
-  static inline void current_springs(const double *stored, double step, double *hist)
+  // history of a listed pair that parted: a new touch is a new contact).
+  // At the setup of a run (no history update) a touching contact
+  // continues the springs it has, whatever their step: after read_restart
+  // the history is that of the last neighbor list build before the file
+  // was written (LIGGGHTS's restart command writes it so), and its stamp
+  // is that step; the setup moves the stamp to the current step.
+  static inline void current_springs(double *stored, double step, bool setup, double *hist)
   {
+    if (setup && stored[LIGGGHTS_STAMP] < step) stored[LIGGGHTS_STAMP] = step;
     const bool fresh = stored[LIGGGHTS_STAMP] < step - 1.0;
     for (int k = 0; k < HIST_SIZE; k++) hist[k] = fresh ? 0.0 : stored[k];
   }

@@ -167,7 +167,7 @@ namespace ContactModels {
       double *stored = &sidata.contact_history[history_offset];
       const double step = static_cast<double>(update->ntimestep);
       double hist[HIST_SIZE];
-      current_springs(stored, step, hist);
+      current_springs(stored, step, sidata.computeflag && !sidata.shearupdate, hist);
 
       ContactForces out;
       contact_forces(coeff[sidata.itype * (ntypes + 1) + sidata.jtype], g, vrel, sidata.omega_i,
