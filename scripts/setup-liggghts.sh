@@ -62,6 +62,19 @@ esac
 echo "LIGGGHTS with GRFLOW is set up."
 
 # ===========================================================================
-# TO BE ADDED: run the quick protocol in LIGGGHTS and make its figures
-# (as scripts/setup.sh does for LAMMPS: runs/quick and its figures).
+# the quick protocol in LIGGGHTS (inputs/liggghts/, inputs/README.md
+# "LIGGGHTS"), then its figures, as scripts/setup.sh does for LAMMPS
 # ===========================================================================
+[ "${GRFLOW_SKIP_RUN:-0}" = 1 ] && exit 0
+np=$(( $(nproc) >= 2 ? 2 : 1 ))
+echo "running the protocol in LIGGGHTS, quick preset, on $np MPI ranks: runs/quick-liggghts" \
+  "(log: runs/quick-liggghts/log.*.lammps)"
+rm -rf runs/quick-liggghts
+start=$(date +%s)
+mpirun --allow-run-as-root --oversubscribe -np "$np" "$liggghts" -log none -screen none \
+  -in inputs/liggghts/cyclic_shear.liggghts -var preset quick -var outdir runs/quick-liggghts \
+  || { echo "ERROR: the LIGGGHTS protocol run failed; see runs/quick-liggghts/log.*.lammps"; exit 1; }
+echo "protocol done in $(( $(date +%s) - start )) s"
+grep -h "^GRFLOW " runs/quick-liggghts/log.prep.lammps runs/quick-liggghts/log.shear.lammps \
+  | grep -v "^GRFLOW shear: step " || true
+/usr/bin/python3 analysis/make_figures.py runs/quick-liggghts
