@@ -609,7 +609,8 @@ TEST(Compress, BadInput)
       {"fix c all grflow/compress w net 1e5 10 bogus x",
        "Unknown fix grflow/compress keyword: bogus"},
       {"fix c all grflow/compress w net 1e5 10 every", "fix grflow/compress every"},
-      {"fix c all grflow/compress w net 1e5 ten", "Expected floating point"},
+      {"fix c all grflow/compress w net 1e5 ten",
+       "fix grflow/compress rate_max expects a number, got 'ten'"},
       {"fix c all grflow/compress w net 1e5 10 elastic 3", "elastic takes an equal-style variable"},
   };
   for (const auto &c : cases) {

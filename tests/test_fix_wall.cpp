@@ -1188,11 +1188,14 @@ TEST(FixWallErrors, BadFixCommand)
     const char *line, *expect;
   } cases[] = {
       {"fix w all grflow/wall 1.0e6", "Incorrect args for fix grflow/wall: expected kn cn"},
+      // kn and cn left out: the message names the coefficient
+      {"fix w all grflow/wall zlo 0.0 zhi 0.02", "fix grflow/wall kn expects a number, got 'zlo'"},
       {"fix w all grflow/wall 1.0e6 1.15", "Fix grflow/wall needs a wall: zlo and/or zhi"},
       {"fix w all grflow/wall 1.0e6 1.15 mut 0.3", "needs a wall"},
       {"fix w all grflow/wall 1.0e6 1.15 zlo", "Illegal fix grflow/wall zlo command: missing"},
       {"fix w all grflow/wall 1.0e6 1.15 zhi", "Illegal fix grflow/wall zhi command: missing"},
-      {"fix w all grflow/wall 1.0e6 1.15 zlo abc", "Expected floating point"},
+      {"fix w all grflow/wall 1.0e6 1.15 zlo abc",
+       "fix grflow/wall zlo expects a number, got 'abc'"},
       {"fix w all grflow/wall 1.0e6 1.15 zlo 0.0 foo 1", "Unknown fix grflow/wall keyword: foo"},
       {"fix w all grflow/wall 1.0e6 1.15 zlo 0.006 zhi 0.004",
        "Fix grflow/wall zhi 0.004 must be above zlo 0.006"},
@@ -1237,7 +1240,7 @@ TEST(FixWallErrors, BadFixModify)
       {"fix_modify w wall lo vel", "Illegal fix_modify grflow/wall wall command: missing"},
       {"fix_modify w wall mid vel 0 0 0", "fix_modify w wall: expected lo or hi, got mid"},
       {"fix_modify w wall lo vel 0 0", "Illegal fix_modify grflow/wall wall vel command: missing"},
-      {"fix_modify w wall lo vel a 0 0", "Expected floating point"},
+      {"fix_modify w wall lo vel a 0 0", "expects a number, got 'a'"},
       {"fix_modify w wall lo speed 0 0 0", "fix_modify w wall lo: expected vel or z, got speed"},
       {"fix_modify w wall lo z 0.0095", "fix_modify w: zhi 0.009 must be above zlo 0.0095"},
       {"fix_modify w wall hi z 0.0005", "must be above zlo"},

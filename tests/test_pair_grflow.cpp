@@ -623,8 +623,9 @@ TEST(PairGRFLOWErrors, BadPairCoeff)
       {"pair_coeff * * -1e6 1.15", "kn must be > 0"},
       {"pair_coeff * * 1.0e6 1.15 kr -5", "kr must be >= 0"},
       {"pair_coeff * * 1.0e6 1.15 rolling on", "rolling takes only the value off"},
-      {"pair_coeff * * abc 1.15", "Expected floating point"},
-      {"pair_coeff * * 1.0e6 1.15 muo nan", "Expected floating point"},
+      {"pair_coeff * * abc 1.15", "pair_coeff granular/grflow kn expects a number, got 'abc'"},
+      {"pair_coeff * * 1.0e6 1.15 muo nan",
+       "pair_coeff granular/grflow muo expects a number, got 'nan'"},
       {"pair_coeff 1 3 1.0e6 1.15", "Numeric index 3 is out of bounds"},
   };
   for (const auto &c : cases) {

@@ -34,13 +34,17 @@ const double *GRFLOW::read_restart_values(LAMMPS *lmp, const std::string &who, c
 
 /* ---------------------------------------------------------------------- */
 
-double FixHost::number(const char *str, const std::string & /*what*/) const
+// a value that is not a number stops with the parameter's name (as in
+// the LIGGGHTS build), not only with the word that was found
+double FixHost::number(const char *str, const std::string &what) const
 {
+  if (!utils::is_double(str)) fail(what + " expects a number, got '" + std::string(str) + "'");
   return utils::numeric(FLERR, str, false, lmp);
 }
 
-int FixHost::integer(const char *str, const std::string & /*what*/) const
+int FixHost::integer(const char *str, const std::string &what) const
 {
+  if (!utils::is_integer(str)) fail(what + " expects an integer, got '" + std::string(str) + "'");
   return utils::inumeric(FLERR, str, false, lmp);
 }
 

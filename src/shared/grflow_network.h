@@ -118,9 +118,11 @@ namespace GRFLOW {
       if (region.empty() && !volume.empty())
         host.fail("Compute grflow/network volume goes with region (the slab volume is known)");
       // numbers now, variables when they are used
-      for (const std::string *str : {&zlo, &zhi, &volume})
-        if (!str->empty() && str->compare(0, 2, "v_") != 0)
-          host.number(str->c_str(), "compute grflow/network");
+      const std::string *values[] = {&zlo, &zhi, &volume};
+      const char *const what[] = {"zlimits", "zlimits", "volume"};
+      for (int k = 0; k < 3; k++)
+        if (!values[k]->empty() && values[k]->compare(0, 2, "v_") != 0)
+          host.number(values[k]->c_str(), std::string("compute grflow/network ") + what[k]);
     }
 
     // the bounds of the slab of the sample between zlo and zhi
