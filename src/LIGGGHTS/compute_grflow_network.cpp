@@ -217,18 +217,11 @@ void ComputeGRFLOWNetwork::compute_vector()
   grow_peratom();
 
   const double volume = refresh_ghosts_and_inside();
-  std::vector<double> local(GRFLOW::NetworkSums::size(opt.cmax), 0.0), total(local.size());
+  std::vector<double> local(GRFLOW::NetworkSums::size(opt.cmax), 0.0);
   sum_pair_contacts(local.data());
   sum_wall_contacts(local.data());
   count_particles(local.data());
-  MPI_Allreduce(local.data(), total.data(), (int) local.size(), MPI_DOUBLE, MPI_SUM, world);
-  GRFLOW::derive_network(total.data(), volume, opt.tau_a, opt.tau_b, opt.cmax,
-                         opt.p0flag ? opt.p0 : 0.0, vector);
-  // p0 first: the first positive pressure (r_u = 1 - p/p0 needs p0 > 0)
-  if (opt.p0first && !opt.p0flag && vector[PRESS] > 0.0) {
-    set_p0(vector[PRESS]);
-    vector[RU] = 1.0 - vector[PRESS] / opt.p0;
-  }
+  opt.reduce_and_derive(world, local, volume, vector);
 }
 
 /* ----------------------------------------------------------------------

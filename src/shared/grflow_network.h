@@ -29,11 +29,14 @@
 #include "grflow_host.h"
 #include "grflow_wall.h"
 
+#include <mpi.h>
+
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace LAMMPS_NS {
 namespace GRFLOW {
@@ -124,6 +127,12 @@ namespace GRFLOW {
         if (!values[k]->empty() && values[k]->compare(0, 2, "v_") != 0)
           host.number(values[k]->c_str(), std::string("compute grflow/network ") + what[k]);
     }
+
+    // the output vector from this processor's sums: the sums over all
+    // processors of world, then derive_network() (below); with p0 first,
+    // the first positive pressure becomes p0 (r_u = 1 - p/p0 needs p0 > 0)
+    void reduce_and_derive(MPI_Comm world, const std::vector<double> &local, double volume,
+                           double *vector);
 
     // the bounds of the slab of the sample between zlo and zhi
     void slab_bounds(double zlo_value, double zhi_value, double &lo, double &hi) const
@@ -348,6 +357,19 @@ namespace GRFLOW {
     vector[L::AYZ] = an[1][2];
     vector[L::VOLUME] = volume;
     for (int c = 0; c <= cmax; c++) vector[L::PC0 + c] = (np > 0.0) ? total[S::HIST + c] / np : 0.0;
+  }
+
+  inline void NetworkOptions::reduce_and_derive(MPI_Comm world, const std::vector<double> &local,
+                                                double volume, double *vector)
+  {
+    std::vector<double> total(local.size());
+    MPI_Allreduce(local.data(), total.data(), (int) local.size(), MPI_DOUBLE, MPI_SUM, world);
+    derive_network(total.data(), volume, tau_a, tau_b, cmax, p0flag ? p0 : 0.0, vector);
+    if (p0first && !p0flag && vector[NetworkLayout::PRESS] > 0.0) {
+      p0 = vector[NetworkLayout::PRESS];
+      p0flag = true;
+      vector[NetworkLayout::RU] = 1.0 - vector[NetworkLayout::PRESS] / p0;
+    }
   }
 
 }    // namespace GRFLOW
