@@ -3,7 +3,7 @@
 # Runs apt-get only when something is missing.
 set -euo pipefail
 
-pkgs=(build-essential cmake ninja-build ccache xz-utils ca-certificates
+pkgs=(build-essential cmake ninja-build ccache xz-utils ca-certificates patch
       libopenmpi-dev openmpi-bin libgtest-dev libjpeg-dev libpng-dev
       python3 python3-numpy python3-matplotlib python3-pytest clang-format snakemake)
 
