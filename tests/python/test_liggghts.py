@@ -302,3 +302,57 @@ def test_resume_from_a_restart_file_keeps_the_springs(packing):
     # step stamp did before the setup continued touching contacts.  The
     # threshold sits 9x above the one and 250x below the other.
     assert d < 0.2
+
+
+COMPUTE_DECK = """units si
+newton off
+atom_style granular
+communicate single vel yes
+region b block 0 1e-2 0 1e-2 0 1e-2 units box
+create_box 1 b
+create_atoms 1 single 5e-3 5e-3 5e-3 units box
+set group all diameter 1e-3
+set group all density 2650
+fix kn all property/global kn peratomtypepair 1 1e6
+fix cn all property/global cn peratomtypepair 1 1.0
+{pair}
+timestep 1e-7
+{compute}
+thermo_style custom step c_n[7]
+run 0
+"""
+
+
+@pytest.mark.parametrize("compute,message", [
+    ("compute n all grflow/network foo 1", "Unknown compute grflow/network keyword: foo"),
+    ("compute n all grflow/network slab 0", "slab must be in (0,1], got 0"),
+    ("compute n all grflow/network slab abc", "compute grflow/network slab expects a number, got 'abc'"),
+    ("compute n all grflow/network cmax 2.5", "compute grflow/network cmax expects an integer, got '2.5'"),
+    ("compute n all grflow/network p0 -1", "p0 must be > 0"),
+    ("compute n all grflow/network region nope", "Region nope for compute grflow/network does not exist"),
+    ("compute n all grflow/network shear xx", "shear must be two different axes"),
+    ("compute n all grflow/network zlimits 0", "Illegal compute grflow/network zlimits command: missing"),
+])
+def test_compute_bad_input(tmp_path, compute, message):
+    deck = tmp_path / "in.compute"
+    deck.write_text(COMPUTE_DECK.format(pair="pair_style gran model grflow\npair_coeff * *",
+                                        compute=compute))
+    proc = run_liggghts(["-in", str(deck)], tmp_path, check=False)
+    assert proc.returncode != 0
+    assert message in proc.stdout + proc.stderr
+
+
+def test_compute_needs_model_grflow(tmp_path):
+    """the compute's forces come from GRFLOW's law: another model is refused"""
+    deck = tmp_path / "in.compute"
+    deck.write_text(COMPUTE_DECK.format(
+        pair="fix cv all property/global characteristicVelocity scalar 1.0\n"
+             "fix ym all property/global youngsModulus peratomtype 1e7\n"
+             "fix pr all property/global poissonsRatio peratomtype 0.3\n"
+             "fix cr all property/global coefficientRestitution peratomtypepair 1 0.5\n"
+             "fix cf all property/global coefficientFriction peratomtypepair 1 0.5\n"
+             "pair_style gran model hooke tangential history\npair_coeff * *",
+        compute="compute n all grflow/network"))
+    proc = run_liggghts(["-in", str(deck)], tmp_path, check=False)
+    assert proc.returncode != 0
+    assert "Compute grflow/network requires pair_style gran model grflow" in proc.stdout + proc.stderr
