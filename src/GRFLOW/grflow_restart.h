@@ -14,7 +14,7 @@
 /* ----------------------------------------------------------------------
    The LAMMPS side of the GRFLOW fixes' host-free code:
 
-   - their global restart data: the block of grflow_wall.h (a header with
+   - their global restart data: the block of grflow_host.h (a header with
      a tag that marks GRFLOW data, the fix's format version and the
      number of values, then the values), written on rank 0, its errors
      reported through LAMMPS.  LAMMPS passes Fix::restart() the bytes
@@ -23,8 +23,9 @@
      written before the header existed (format version 0 here) start
      with a value other than the tag.
    - FixHost: numbers read and errors reported the LAMMPS way (utils::,
-     fmt), for the argument rules of grflow_shear_rule.h and
-     grflow_servo.h.
+     fmt; a value that is no number names its parameter), for the
+     argument rules of the shared headers (coefficients, compute, walls,
+     shear, servo; the Host of grflow_host.h).
    The LIGGGHTS build has the same (src/LIGGGHTS/grflow_restart.h).
 ------------------------------------------------------------------------- */
 

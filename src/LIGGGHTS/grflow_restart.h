@@ -3,8 +3,8 @@
    host-free code, as src/GRFLOW/grflow_restart.h is LAMMPS's:
 
    - FixHost: numbers read and errors reported for the argument rules of
-     grflow_shear_rule.h and grflow_servo.h and for the checks of the
-     fixes' global restart data (the block of grflow_wall.h: a header with
+     the shared headers (the Host of grflow_host.h) and for the checks of
+     the fixes' global restart data (the block of grflow_host.h: a header with
      a tag, the fix's format version and the number of values, then the
      values; write_restart_block() on rank 0, read_restart_block() with
      this host).  LIGGGHTS's own readers (force->numeric) do not say which
