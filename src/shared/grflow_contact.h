@@ -65,7 +65,7 @@ namespace GRFLOW {
   // results of one contact evaluation
 
   struct ContactForces {
-    double fn;             // normal force magnitude, >= 0
+    double fn;             // normal force along n, >= 0 unless the law is unclipped
     double f[3];           // total force on i (on j: -f)
     double torque_i[3];    // torque on i
     double torque_j[3];    // torque on j
@@ -174,13 +174,29 @@ namespace GRFLOW {
   }
 
   /* ----------------------------------------------------------------------
-     normal force magnitude: k_n delta - c_n v.n, clipped at zero (no attraction)
+     normal force along n: k_n delta - c_n v.n.  Clipped (the default) it is
+     max(k_n delta - c_n v.n, 0): no attraction.  Unclipped it is the
+     linear spring-dashpot as written, negative (attraction through the
+     dashpot) near the end of a fast separation.  Either way the Coulomb
+     caps of sliding, rolling and torsion are mu max(f_n, 0), the clipped
+     force (normal_force_clipped()): a contact in tension resists no
+     tangential motion, as one that carries no force.
   ------------------------------------------------------------------------- */
 
-  static GRFLOW_INLINE double normal_force(double kn, double cn, double delta, double vn)
+  static GRFLOW_INLINE double normal_force_clipped(double kn, double cn, double delta, double vn)
   {
     const double fn = kn * delta - cn * vn;
     return (fn > 0.0) ? fn : 0.0;
+  }
+
+  // the force of law normal_law (NORMAL_CLIPPED or NORMAL_UNCLIPPED);
+  // fn_cap gets the clipped force, which the caps use
+  static GRFLOW_INLINE double normal_force(int normal_law, double kn, double cn, double delta,
+                                           double vn, double &fn_cap)
+  {
+    const double fn = kn * delta - cn * vn;
+    fn_cap = (fn > 0.0) ? fn : 0.0;
+    return (normal_law == NORMAL_UNCLIPPED) ? fn : fn_cap;
   }
 
   /* ----------------------------------------------------------------------
@@ -202,7 +218,8 @@ namespace GRFLOW {
     // normal
 
     const double vn = dot3(vrel, n);
-    const double fn = normal_force(c.kn, c.cn, g.delta, vn);
+    double fnc;    // the clipped force, for the caps
+    const double fn = normal_force(c.normal_law, c.kn, c.cn, g.delta, vn, fnc);
     out.fn = fn;
 
     // sliding: velocity of the material points at the contact point
@@ -225,7 +242,7 @@ namespace GRFLOW {
       rotate_into_plane(xit, n);
       rotate_into_plane(xir, n);
     }
-    spring_dashpot_capped(c.kt, c.ct, c.mut * fn, vt, dt, update, xit, out.ft);
+    spring_dashpot_capped(c.kt, c.ct, c.mut * fnc, vt, dt, update, xit, out.ft);
 
     // rolling: v_r = -a' n x (w_i - w_j)
 
@@ -237,12 +254,12 @@ namespace GRFLOW {
     vr[0] = -g.reff * nxw[0];
     vr[1] = -g.reff * nxw[1];
     vr[2] = -g.reff * nxw[2];
-    spring_dashpot_capped(c.kr, c.cr, c.mur * fn, vr, dt, update, xir, out.fr);
+    spring_dashpot_capped(c.kr, c.cr, c.mur * fnc, vr, dt, update, xir, out.fr);
 
     // torsion: v_o = a' (w_i - w_j).n
 
     const double vo = g.reff * dot3(wrel, n);
-    out.fo = spring_dashpot_capped(c.ko, c.co, c.muo * fn, vo, dt, update, &xio);
+    out.fo = spring_dashpot_capped(c.ko, c.co, c.muo * fnc, vo, dt, update, &xio);
 
     if (update) {
       for (int k = 0; k < 3; k++) {
@@ -374,7 +391,8 @@ namespace GRFLOW {
     // normal
 
     const double vn = dot3(vrel, n);
-    const double fn = normal_force(c.kn, c.cn, g.delta, vn);
+    double fnc;    // the clipped force, for the caps
+    const double fn = normal_force(c.normal_law, c.kn, c.cn, g.delta, vn, fnc);
     out.fn = fn;
 
     // mode velocities: lane 0 sliding (contact-point velocity), lane 1
@@ -402,7 +420,7 @@ namespace GRFLOW {
     const vec2 k = {c.kt, c.kr};
     const vec2 cv = {c.ct, c.cr};
     const vec2 mu = {c.mut, c.mur};
-    spring_dashpot_capped2(k, cv, mu * fn, v, dt, update, x, f);
+    spring_dashpot_capped2(k, cv, mu * fnc, v, dt, update, x, f);
 
     // torsion: v_o = a' (w_i - w_j).n
 
@@ -410,7 +428,7 @@ namespace GRFLOW {
     {
       // spring_dashpot_capped() for a scalar, written out without branches
       // (the same numbers; calling it instead measured 3-4% slower)
-      const double cap = c.muo * fn;
+      const double cap = c.muo * fnc;
       if (update) xio += vo * dt;
       const double fo = -c.ko * xio - c.co * vo;
       const double fc = (fo > cap) ? cap : ((fo < -cap) ? -cap : fo);

@@ -41,9 +41,17 @@ namespace GRFLOW {
     double kt, ct, mut;    // sliding stiffness, viscosity, friction coefficient
     double kr, cr, mur;    // rolling
     double ko, co, muo;    // torsion
+    // the normal force law, not a coefficient (no keyword of pair_coeff):
+    // NORMAL_CLIPPED, f_n = max(k_n delta - c_n v_n, 0), or
+    // NORMAL_UNCLIPPED, f_n = k_n delta - c_n v_n, which may be negative;
+    // the hosts' normal_force keyword (read_normal_force()) sets it
+    int normal_law = 0;
   };
 
-  // order of ContactCoeffs' members; also the keywords (kn, cn first)
+  // values of ContactCoeffs::normal_law; clipped is the default
+  enum { NORMAL_CLIPPED = 0, NORMAL_UNCLIPPED = 1 };
+
+  // order of ContactCoeffs' coefficient members; also the keywords (kn, cn first)
   enum { KN, CN, KT, CT, MUT, KR, CR, MUR, KO, CO, MUO, NCOEFF };
   static constexpr const char *COEFF_NAMES[NCOEFF] = {"kn", "cn",  "kt", "ct", "mut", "kr",
                                                       "cr", "mur", "ko", "co", "muo"};
@@ -101,6 +109,7 @@ namespace GRFLOW {
     return NCOEFF;
   }
 
+  // the coefficients of value into c (c.normal_law is left as it is)
   static inline void pack_coeffs(const double *value, ContactCoeffs &c)
   {
     c.kn = value[KN];
@@ -186,6 +195,24 @@ namespace GRFLOW {
     if (strcmp(value, "full") == 0) return 1;
     host.fail("Unknown " + cmd + " velocity_arm value " + value + ": expected reduced or full");
     return 0;
+  }
+
+  // the keyword value of a normal force law
+  static inline const char *normal_law_name(int normal_law)
+  {
+    return normal_law == NORMAL_UNCLIPPED ? "unclipped" : "clipped";
+  }
+
+  // the value of a normal_force keyword: NORMAL_CLIPPED for clipped,
+  // NORMAL_UNCLIPPED for unclipped
+  template <class Host>
+  static inline int read_normal_force(const std::string &cmd, const char *value, Host &host)
+  {
+    if (strcmp(value, "clipped") == 0) return NORMAL_CLIPPED;
+    if (strcmp(value, "unclipped") == 0) return NORMAL_UNCLIPPED;
+    host.fail("Unknown " + cmd + " normal_force value " + value +
+              ": expected clipped or unclipped");
+    return NORMAL_CLIPPED;
   }
 
 }    // namespace GRFLOW
