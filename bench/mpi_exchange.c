@@ -1,5 +1,5 @@
 /* The cost of one MPI exchange (Irecv, Send, Wait) between 2 ranks, as
-   LAMMPS makes them in a ghost swap, for 8 B to 50 kB (bench/README.md,
+   LAMMPS makes them in a ghost swap, for 8 B to 50 kB (doc/studies/two-rank-comm.md,
    "Where the 2-rank Comm time goes").  GPL-2.0, part of GRFLOW.
      mpicc -O2 bench/mpi_exchange.c -o mpi_exchange
      mpirun --allow-run-as-root --oversubscribe -np 2 ./mpi_exchange */

@@ -2,7 +2,7 @@
 # e and z_g after the preparation stage at N = 500 over seeds 1-6, three
 # ways (the quick preset; mu_prep 0.0407 without and with the agitation
 # stage): the scatter behind the thresholds of tests/python/test_protocol.py
-# (bench/README.md, "Scatter of the small preparation").  Lines "name seed e
+# (doc/studies/prep-scatter.md).  Lines "name seed e
 # z_g p" on stdout; 2 runs at a time.
 #   bash bench/prep_scatter.sh [OUT_DIR]     (default runs/escatter; LMP: build/lmp)
 set -euo pipefail

@@ -8,7 +8,7 @@
 # stage (the liquefied sample has few contacts), so one sample from its
 # start would not do.  Nor do a few short ones: the speed also changes
 # twofold within a post-liquefaction cycle, and 5 samples of 20000 steps
-# overestimated the paper case's 2-rank time by 30% (bench/README.md).
+# overestimated the paper case's 2-rank time by 30% (doc/studies/shear-stage-sampling.md).
 # Check the sum for the run's own rank count against its measured time.
 #   bash bench/sample_shear_speed.sh RUNDIR [NSTEPS]     # default 20000
 # Environment:

@@ -2,7 +2,7 @@
 # One change at a time at N = 1000: the whole protocol (quick preset) for
 # each seed and each variant (a name and its -var settings), 1-core runs
 # JOBS at a time, each with its figures and summary; then one table of
-# what the paper reports (bench/README.md: "The wall speed at N = 1000",
+# what the paper reports (doc/studies: "The wall speed at N = 1000",
 # "The rolling and torsion arm at N = 1000").
 #   bash bench/variants_quick.sh OUT_DIR "SEEDS" "NAME|ARGS" ...
 #   bash bench/variants_quick.sh runs/arm "1 2 3" "base|" "arm2|-var kr_kn 0.4 -var mu_r 0.2"

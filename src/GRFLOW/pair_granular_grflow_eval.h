@@ -40,7 +40,7 @@ namespace LAMMPS_NS {
    newton_pair and special bonds (as in the OPT package), so that it
    carries no tests of them; neighbor lists carry special-bond bits only in
    molecular systems, without them no special_lj lookup is needed
-   (together about 10% of the pair time, bench/README.md)
+   (together about 10% of the pair time, doc/studies/pair-benchmark.md)
 ------------------------------------------------------------------------- */
 
 template <class Tally>

@@ -416,7 +416,7 @@ def test_stock_deck_runs_the_protocol(protocol, tmp_path):
     assert abs(prep["p"] - 1.0e5) < 0.15e5
     # one sample each of a chaotic process: alike, not equal.  Bounds: 4
     # standard deviations of the difference of two samples, from the
-    # scatter over 6 seeds of this preparation (bench/README.md, "Scatter
+    # scatter over 6 seeds of this preparation (doc/studies/prep-scatter.md, "Scatter
     # of the small preparation": e sd 0.0176, z_g sd 0.050, so 4 sqrt(2) sd)
     assert abs(prep["e"] - ref["e"]) < 4 * 2 ** 0.5 * 0.0176
     assert abs(prep["z_g"] - ref["z_g"]) < 4 * 2 ** 0.5 * 0.050
@@ -446,7 +446,7 @@ def test_agitation_keeps_density_lowers_coordination(tmp_path):
     print(f"[ measured ] N = 500: plain e = {plain['e']:.4f}, z_g = {plain['z_g']:.3f}; "
           f"agitated (1.003, mu_rec 0.25) e = {agitated['e']:.4f}, z_g = {agitated['z_g']:.3f}")
     # bounds: the mean plus or minus 4 standard deviations of the
-    # differences agitated - plain of 6 seeds (bench/README.md, "Scatter of
+    # differences agitated - plain of 6 seeds (doc/studies/prep-scatter.md, "Scatter of
     # the small preparation": e +0.0079 sd 0.0007, z_g -1.262 sd 0.109)
     assert abs(agitated["e"] - plain["e"]) < 0.0079 + 4 * 0.0007
     assert agitated["z_g"] < plain["z_g"] - (1.262 - 4 * 0.109)
