@@ -1,6 +1,7 @@
 # The cyclic resistance curve (CSR against N_IL) as one Snakemake workflow:
 # each seed is prepared once, then sheared from that state at every CSR;
-# curve.py fits CSR = a N_IL^(-b) and draws the curve.
+# grflow-curve (analysis/, installed by scripts/setup.sh) fits
+# CSR = a N_IL^(-b) and draws the curve.
 #
 #   snakemake -s workflows/resistance_curve.smk --cores 2 \
 #     --config csr="[0.15,0.2,0.25,0.3]" seeds="[1,2,3]" preset=quick
@@ -15,10 +16,11 @@
 #   p_target    confining stress of the preparation (Pa)                   1.0e5
 #   out         campaign directory                        runs/curve-<preset>
 #   lmp         the LAMMPS binary                                             lmp
+#   curve       the curve command (analysis/, scripts/setup.sh)      grflow-curve
 #   np          MPI ranks per run (1: no mpirun)                               1
 #   vars        more -var settings for every run, e.g. "N 500 v_x 0.02"       ""
 # Every run is a normal run directory (OUT/seed<S>/csr<C>/) that
-# analysis/make_figures.py understands; OUT/curve.{png,json,md} is the
+# grflow-figures understands; OUT/curve.{png,json,md} is the
 # result.  snakemake reruns only what is missing or failed; --summary lists
 # what is done; on a SLURM cluster add --profile workflows/profiles/slurm.
 
@@ -35,6 +37,7 @@ N_POST = int(config.get("n_post", 1))
 P_TARGET = float(config.get("p_target", 1.0e5))
 OUT = config.get("out", "runs/curve-" + PRESET)
 LMP = config.get("lmp", "lmp")
+CURVE = config.get("curve", "grflow-curve")
 NP = int(config.get("np", 1))
 VARS = str(config.get("vars", "")).split()
 
@@ -83,7 +86,7 @@ rule prep:
 
 
 # stage 5 at one CSR from the seed's prepared state; run.json records the
-# settings (tau_amp = csr * p_target) for curve.py
+# settings (tau_amp = csr * p_target) for grflow-curve
 rule shear:
     input:
         restart=rules.prep.output.restart,
@@ -123,4 +126,4 @@ rule curve:
     params:
         dirs=lambda w, input: " ".join(os.path.dirname(p) for p in input),
     shell:
-        "/usr/bin/python3 {GRFLOW}/workflows/curve.py {OUT} {params.dirs}"
+        "{CURVE} {OUT} {params.dirs}"

@@ -2,7 +2,8 @@
 # extract the quantities of the isochoric cyclic shearing paper.
 # Part of GRFLOW, distributed under the GNU General Public License v2
 # (see LICENSE at the top of the repository).
-"""Library behind ``analysis/make_figures.py``.
+"""The analysis of a GRFLOW run directory; ``grflow-figures``
+(:mod:`grflow_analysis.figures`) draws the paper's figures with it.
 
 The run directory format is that of ``inputs/README.md``: ``prep.json``,
 ``series.txt`` (36 named columns), ``events.txt`` (the cycle events of fix
@@ -18,10 +19,10 @@ Definitions (section numbers of the paper, paper/isochoric-cyclic-shearing.md):
   src/shared/grflow_cycle_count.h): shear starts at N = 0; reversal k is at
   N = k/2 - 1/4, the first zero-crossing of tau after it at N = k/2; linear
   in time in between (see :func:`cycle_count`).  The events and N_IL are
-  the fix's (events.txt, :func:`run_events`); :func:`cycle_events` finds
-  them again in the series only for runs written before events.txt;
-* initial liquefaction: the fix's step of the first r_u >= ru_liq (the
-  first row with r_u >= ru_liq for older runs), N_IL its N (sec. 3);
+  the fix's, read from events.txt (:func:`run_events`), and nothing here
+  finds them again in the series: a run without events.txt is an error;
+* initial liquefaction: the fix's step of the first r_u >= ru_liq, N_IL
+  its N (sec. 3);
 * liquefaction exit: a row after the onset with r_u < ru_liq whose previous
   row had r_u >= ru_liq (sec. 3: "exits liquefaction state when r_u < 0.99");
 * cycle n runs from N = n to N = n + 1; its states (sec. 3, Fig. 2) are
@@ -286,71 +287,6 @@ def read_dump_local(path):
     return d
 
 
-def network_from_snapshot(atoms, contacts, zlo, zhi, slab=0.8, cmax=12, stress=None):
-    """Contact network of a snapshot, recomputed offline as compute grflow/network does.
-
-    ``atoms`` and ``contacts`` are the dicts of :func:`read_dump_atoms` and
-    :func:`read_dump_local` of one step; ``zlo``/``zhi`` the wall positions
-    (series columns of that step).  The sub-volume is the decks' (compute
-    ``net``: ``zlimits v_zlo v_zhi slab 0.8``, group ``free``): particles with
-    glue 0 whose centre z is in [zmid - slab h/2, zmid + slab h/2).  A
-    contact is an entry with fn > 0; entries with fn <= 0 (overlapping but
-    separating, doc/compute_grflow_network.rst) are left out.  Each end of a
-    contact that belongs to a particle inside counts for that particle and
-    adds n n to the fabric.  A particle inside that overlaps a wall plane
-    is counted as touching that wall: the wall forces are not dumped, so
-    an overlap with a zero force (which the compute does not count) cannot
-    be told apart; in the decks' central slab no particle inside can reach
-    a wall.
-
-    Returns a dict: ``N_p``, ``floaters``, ``N_c``, ``z_g``, ``z``, ``P``
-    (P_0 .. P_cmax, the last for cmax or more contacts), ``a`` (the 3x3
-    fabric anisotropy tensor 15/2 (F - I/3)), ``a_abs`` (sqrt(3/2 a:a)) and,
-    if ``stress`` (sxx syy szz sxy sxz syz, the series columns) is given,
-    ``a_c`` with the sign of a:s, s the deviator of the stress made
-    symmetric from those columns.  The compute uses (s_ab + s_ba)/2 of its
-    full tensor, and the series does not hold s_yx, s_zx, s_zy: where a:s
-    is near 0 the two signs can differ.
-    """
-    ac, cc = atoms["columns"], contacts["columns"]
-    ids = ac["id"].astype(np.int64)
-    z, rad = ac["z"], ac["radius"]
-    half = 0.5 * slab * (zhi - zlo)
-    zmid = 0.5 * (zlo + zhi)
-    inside = (ac["glue"] == 0) & (z >= zmid - half) & (z < zmid + half)
-    index = {int(i): k for k, i in enumerate(ids)}
-    ncont = np.zeros(len(ids), dtype=np.int64)
-    fab = np.zeros((3, 3))
-    keep = cc["fn"] > 0.0
-    for i1, i2, dx, dy, dz in zip(cc["id1"][keep], cc["id2"][keep], cc["dx"][keep],
-                                  cc["dy"][keep], cc["dz"][keep]):
-        ends = 0
-        for i in (index[int(i1)], index[int(i2)]):
-            if inside[i]:
-                ncont[i] += 1
-                ends += 1
-        if ends:
-            n = np.array([dx, dy, dz]) / math.sqrt(dx * dx + dy * dy + dz * dz)
-            fab += ends * np.outer(n, n)
-    for wall in (inside & (z - rad < zlo), inside & (z + rad > zhi)):
-        ncont[wall] += 1
-        fab[2, 2] += np.count_nonzero(wall)
-    c = ncont[inside]
-    n_p, floaters, csum = len(c), int(np.count_nonzero(c == 0)), int(c.sum())
-    P = np.bincount(np.minimum(c, cmax), minlength=cmax + 1)[:cmax + 1] / max(n_p, 1)
-    a = 7.5 * (fab / csum - np.eye(3) / 3.0) if csum else np.zeros((3, 3))
-    out = {"N_p": n_p, "floaters": floaters, "N_c": 0.5 * csum,
-           "z_g": csum / (n_p - floaters) if n_p > floaters else 0.0,
-           "z": csum / n_p if n_p else 0.0, "P": P, "a": a,
-           "a_abs": math.sqrt(1.5 * float(np.sum(a * a)))}
-    if stress is not None:
-        sxx, syy, szz, sxy, sxz, syz = stress
-        sig = np.array([[sxx, sxy, sxz], [sxy, syy, syz], [sxz, syz, szz]])
-        dev = sig - np.trace(sig) / 3.0 * np.eye(3)
-        out["a_c"] = out["a_abs"] if np.sum(a * dev) >= 0.0 else -out["a_abs"]
-    return out
-
-
 def list_snapshots(run_dir, kind="atoms"):
     """Shear-stage snapshot files of a run, as a sorted list of (step, path)."""
     snapdir = os.path.join(run_dir, "snapshots")
@@ -366,65 +302,17 @@ def list_snapshots(run_dir, kind="atoms"):
 
 # ---------------------------------------------------------------- cycles
 
-def cycle_events(series):
-    """Quarter-cycle events found in the series.
-
-    Returns a dict with ``reversal_rows`` (list; entry k-1 is the first row
-    whose ``reversals`` >= k), ``crossing_rows`` (dict k -> row or None: the
-    first row after reversal k, before reversal k+1, where tau has the sign
-    of the new direction, i.e. tau <= 0 after an odd reversal (made at
-    +tau_amp), tau >= 0 after an even one; k = 0 is the shear start, row 0
-    when no reversal precedes the series), and ``rows``/``N``: the event rows
-    in time order with their N values (0 for the start, k/2 - 1/4 for
-    reversal k, k/2 for the crossing after reversal k).
-    """
-    rev = np.maximum.accumulate(np.rint(series["reversals"]).astype(np.int64))
-    tau = series["tau"]
-    nrow = len(rev)
-    k0, kmax = int(rev[0]), int(rev[-1])
-    reversal_rows = [None] * kmax
-    for k in range(k0 + 1, kmax + 1):
-        reversal_rows[k - 1] = int(np.searchsorted(rev, k, side="left"))
-    crossing_rows = {}
-    if k0 == 0:
-        crossing_rows[0] = 0
-    for k in range(max(k0, 1), kmax + 1):
-        start = reversal_rows[k - 1]
-        if start is None:       # reversal before the first row: unknown
-            crossing_rows[k] = None
-            continue
-        stop = reversal_rows[k] if k < kmax else nrow
-        sign = -1.0 if k % 2 else 1.0
-        hit = np.nonzero(sign * tau[start + 1:stop] >= 0.0)[0]
-        crossing_rows[k] = int(start + 1 + hit[0]) if len(hit) else None
-    events = []
-    if k0 == 0:
-        events.append((0, 0.0))
-    for k in range(k0 + 1, kmax + 1):
-        events.append((reversal_rows[k - 1], k / 2.0 - 0.25))
-    for k, row in crossing_rows.items():
-        if k > 0 and row is not None:
-            events.append((row, k / 2.0))
-    events.sort()
-    rows, Ns = [], []
-    for row, n in events:
-        if rows and row == rows[-1]:      # two events on one row: keep the later one
-            rows.pop()
-            Ns.pop()
-        rows.append(row)
-        Ns.append(n)
-    return {"reversal_rows": reversal_rows, "crossing_rows": crossing_rows,
-            "rows": rows, "N": Ns}
-
-
 def fix_events(table, series):
-    """The events of fix grflow/shear (:func:`read_events`) in the form of
-    :func:`cycle_events`, plus ``time`` (the events' times, for
-    :func:`cycle_count`), ``N_IL`` (the fix's N at initial liquefaction,
-    None if not known) and ``step_IL`` (None before it).  An event's row is
-    the first series row at or after its step.  A zero-crossing seen on the
-    same check as the next reversal is flagged as the reversal only; its
-    row is that reversal's.
+    """The events of fix grflow/shear (:func:`read_events`) placed on the
+    series: a dict with ``reversal_rows`` (list; entry k-1 is the row of
+    reversal k, None if unknown), ``crossing_rows`` (dict k -> row or None:
+    the first zero-crossing of tau after reversal k; k = 0 is the shear
+    start), ``rows``, ``N`` and ``time`` (every event in time order, with
+    its N and time, for :func:`cycle_count`), ``N_IL`` (the fix's N at
+    initial liquefaction, None if not known) and ``step_IL`` (None before
+    it).  An event's row is the first series row at or after its step.  A
+    zero-crossing seen on the same check as the next reversal is flagged as
+    the reversal only; its row is that reversal's.
     """
     step = series["step"]
     nrow = len(step)
@@ -457,54 +345,45 @@ def fix_events(table, series):
             "rows": rows, "N": [float(n) for n in table["N"]],
             "time": [float(t) for t in table["time"]],
             "N_IL": float(known[-1]) if len(known) else None,
-            "step_IL": int(st_il[-1]) if len(st_il) else None,
-            "source": "fix"}
+            "step_IL": int(st_il[-1]) if len(st_il) else None}
 
 
 def run_events(run_dir, series):
-    """The cycle events of a run: the fix's (``events.txt``) when the run
-    has them, else found again in the series (:func:`cycle_events`, runs
-    written before events.txt existed; ``source`` says which)."""
+    """The cycle events of a run: fix grflow/shear's, from ``events.txt``
+    (:func:`read_events`, :func:`fix_events`).  They are the only source of
+    the events and of N_IL: a run directory without ``events.txt`` (written
+    before the fix wrote it, or incomplete) raises FormatError."""
     path = os.path.join(run_dir, "events.txt")
-    if os.path.exists(path):
-        return fix_events(read_events(path), series)
-    ev = cycle_events(series)
-    ev["source"] = "series"
-    return ev
+    if not os.path.isfile(path):
+        raise FormatError("%s: no events.txt.  The cycle events and N_IL are fix "
+                          "grflow/shear's, which the decks write there (inputs/README.md); "
+                          "this directory was written before events.txt existed, or by "
+                          "a run that did not reach the shear stage" % run_dir)
+    return fix_events(read_events(path), series)
 
 
-def liquefaction_n(events, N, onset):
-    """N_IL and how it was made: fix grflow/shear's (None if not known: no
-    cycle event after initial liquefaction) when ``events`` are the fix's,
-    else N of the onset row (older runs); (None, None) if not reached."""
+def liquefaction_n(events, onset):
+    """N_IL: fix grflow/shear's (events["N_IL"]); None if initial
+    liquefaction was not reached (``onset`` None) or no event came after
+    it yet (the fix knows N_IL from the event after it on)."""
     if onset is None:
-        return None, None
-    if events.get("source") == "fix":
-        return events["N_IL"], "fix grflow/shear's N_IL"
-    return float(N[onset]), "N of the onset row"
+        return None
+    return events["N_IL"]
 
 
-def cycle_count(series, events=None):
+def cycle_count(series, events):
     """Fractional number of cycles N at every row (inputs/README.md).
 
-    N is 0 at time 0 (shear start), k/2 - 1/4 at reversal k, k/2 at the first
-    zero-crossing of tau after reversal k, each event at the time of the
-    first row where it is seen, and linear in time between events.  After
-    the last event N is extrapolated linearly with the rate of the last
-    interval between events (a quarter cycle), capped at a quarter cycle
-    beyond the last event (the next event has not happened).  Before any
-    reversal no rate is known and N stays 0.  Rows before the first event
-    (a series not starting at the shear start) take the first event's N.
+    N is that of the fix's events (``events`` of :func:`run_events`) at
+    their own times, and linear in time between events.  After the last
+    event N is extrapolated linearly with the rate of the last interval
+    between events (a quarter cycle), capped at a quarter cycle beyond the
+    last event (the next event has not happened).  Before any reversal no
+    rate is known and N stays 0.  Rows before the first event (a series
+    not starting at the shear start) take the first event's N.
     """
-    if events is None:
-        events = cycle_events(series)
     t = series["time"]
-    if "time" in events:        # the fix's events, at their own times
-        et, en = list(events["time"]), list(events["N"])
-    else:
-        et = [0.0 if (row == 0 and n == 0.0) else float(t[row])
-              for row, n in zip(events["rows"], events["N"])]
-        en = list(events["N"])
+    et, en = list(events["time"]), list(events["N"])
     if not et:
         return np.zeros_like(t)
     N = np.interp(t, et, en)
@@ -515,28 +394,21 @@ def cycle_count(series, events=None):
     return N
 
 
-def liquefaction(series, ru_liq=DEFAULT_RU_LIQ, events=None):
+def liquefaction(series, events, ru_liq=DEFAULT_RU_LIQ):
     """Initial liquefaction and exits.
 
-    Returns a dict: ``onset`` (the row of the fix's step of initial
-    liquefaction when ``events`` are the fix's, else the first row with
-    r_u >= ru_liq; None if not reached),
-    ``exits`` (rows after the onset with r_u < ru_liq whose previous row has
-    r_u >= ru_liq) and ``entries`` (rows after the onset with r_u >= ru_liq
-    whose previous row has r_u < ru_liq).
+    Returns a dict: ``onset`` (the first row at or after the fix's step of
+    initial liquefaction, events["step_IL"]; None if not reached, or not
+    within the series), ``exits`` (rows after the onset with r_u < ru_liq
+    whose previous row has r_u >= ru_liq) and ``entries`` (rows after the
+    onset with r_u >= ru_liq whose previous row has r_u < ru_liq).
     """
     ru = series["r_u"]
-    liq = ru >= ru_liq
-    if events is not None and events.get("source") == "fix":
-        st = events["step_IL"]
-        onset = None if st is None else int(np.searchsorted(series["step"], st, side="left"))
-        if onset is not None and onset >= len(ru):
-            onset = None
-    else:
-        hit = np.nonzero(liq)[0]
-        onset = int(hit[0]) if len(hit) else None
-    if onset is None:
+    st = events["step_IL"]
+    onset = None if st is None else int(np.searchsorted(series["step"], st, side="left"))
+    if onset is None or onset >= len(ru):
         return {"onset": None, "exits": [], "entries": []}
+    liq = ru >= ru_liq
     below = ru < ru_liq
     idx = np.arange(onset + 1, len(ru))
     exits = idx[below[idx] & liq[idx - 1]]
@@ -545,20 +417,19 @@ def liquefaction(series, ru_liq=DEFAULT_RU_LIQ, events=None):
             "entries": [int(i) for i in entries]}
 
 
-def find_cycle_states(series, cycle, ru_liq=DEFAULT_RU_LIQ, events=None, liq=None):
+def find_cycle_states(series, events, cycle, ru_liq=DEFAULT_RU_LIQ, liq=None):
     """Rows of the six states of cycle ``cycle`` (n >= 0); None where not found.
 
-    C0: first row with tau >= 0 after reversal 2n (the start of loading
-    towards +tau_amp; for n = 0 the shear start); C1: reversal 2n+1 (tau
-    reached +tau_amp); C2: first row with tau <= 0 after reversal 2n+1;
-    C3: reversal 2n+2 (tau reached -tau_amp); C0': first liquefaction exit
-    at or after C0 and before C1 (before the end of the series if C1 is not
-    reached); C2': the same between C2 and C3.
+    C0: the first zero-crossing of tau after reversal 2n (the start of
+    loading towards +tau_amp; for n = 0 the shear start); C1: reversal 2n+1
+    (tau reached +tau_amp); C2: the first zero-crossing after reversal
+    2n+1; C3: reversal 2n+2 (tau reached -tau_amp), all as the fix's
+    ``events``; C0': first liquefaction exit at or after C0 and before C1
+    (before the end of the series if C1 is not reached); C2': the same
+    between C2 and C3.
     """
-    if events is None:
-        events = cycle_events(series)
     if liq is None:
-        liq = liquefaction(series, ru_liq, events)
+        liq = liquefaction(series, events, ru_liq)
     rr, cr = events["reversal_rows"], events["crossing_rows"]
 
     def reversal(k):
@@ -582,19 +453,17 @@ def find_cycle_states(series, cycle, ru_liq=DEFAULT_RU_LIQ, events=None, liq=Non
     return {s: st[s] for s in STATES}
 
 
-def post_liquefaction_cycles(series, ru_liq=DEFAULT_RU_LIQ, events=None, liq=None):
+def post_liquefaction_cycles(series, events, ru_liq=DEFAULT_RU_LIQ, liq=None):
     """Cycles n whose C0 is at or after the onset of liquefaction, in order."""
-    if events is None:
-        events = cycle_events(series)
     if liq is None:
-        liq = liquefaction(series, ru_liq, events)
+        liq = liquefaction(series, events, ru_liq)
     if liq["onset"] is None:
         return []
     return [k // 2 for k, row in sorted(events["crossing_rows"].items())
             if k % 2 == 0 and row is not None and row >= liq["onset"]]
 
 
-def choose_cycle(series, ru_liq=DEFAULT_RU_LIQ, index=None, events=None, liq=None):
+def choose_cycle(series, events, ru_liq=DEFAULT_RU_LIQ, index=None, liq=None):
     """Pick cycle C.
 
     With ``index`` None: the first post-liquefaction cycle with all six
@@ -602,30 +471,26 @@ def choose_cycle(series, ru_liq=DEFAULT_RU_LIQ, index=None, events=None, liq=Non
     cycle.  Returns (n, states, note): n and states None when there is no
     such cycle, note a short reason (or "").
     """
-    if events is None:
-        events = cycle_events(series)
     if liq is None:
-        liq = liquefaction(series, ru_liq, events)
+        liq = liquefaction(series, events, ru_liq)
     if liq["onset"] is None:
         return None, None, "initial liquefaction not reached"
-    cycles = post_liquefaction_cycles(series, ru_liq, events, liq)
+    cycles = post_liquefaction_cycles(series, events, ru_liq, liq)
     if index is not None:
         if not 0 <= index < len(cycles):
             return None, None, ("post-liquefaction cycle %d not reached (%d found)"
                                 % (index, len(cycles)))
         n = cycles[index]
-        return n, find_cycle_states(series, n, ru_liq, events, liq), ""
+        return n, find_cycle_states(series, events, n, ru_liq, liq), ""
     for n in cycles:
-        st = find_cycle_states(series, n, ru_liq, events, liq)
+        st = find_cycle_states(series, events, n, ru_liq, liq)
         if all(v is not None for v in st.values()):
             return n, st, ""
     return None, None, "no post-liquefaction cycle with all six states"
 
 
-def cycle_rows(series, n, events=None):
+def cycle_rows(series, events, n):
     """Row range [first, last] of cycle n: from its C0 to the next C0 (or the end)."""
-    if events is None:
-        events = cycle_events(series)
     first = events["crossing_rows"].get(2 * n)
     if first is None:
         return None
@@ -906,21 +771,19 @@ def _num(x):
     return x if math.isfinite(x) else None
 
 
-def summary(series, prep=None, cycle_index=None, events=None):
+def summary(series, prep, events, cycle_index=None):
     """Measured values beside the paper's, plus cycle C, as a JSON-ready dict.
 
-    ``prep`` is the prep.json dict (None if unavailable); ``cycle_index``
-    selects cycle C among the post-liquefaction cycles (default: the first
-    with all six states); ``events`` those of :func:`run_events` (default:
-    found again in the series).  Entries measured as "not reached" (an
-    event that did not happen) or "not available" (missing input) never
-    match.
+    ``prep`` is the prep.json dict (None if unavailable); ``events`` the
+    fix's, of :func:`run_events` (the only source of the events and of
+    N_IL); ``cycle_index`` selects cycle C among the post-liquefaction
+    cycles (default: the first with all six states).  Entries measured as
+    "not reached" (an event that did not happen) or "not available"
+    (missing input) never match.
     """
     ru_liq, tau_amp = protocol(prep)
-    if events is None:
-        events = cycle_events(series)
     N = cycle_count(series, events)
-    liq = liquefaction(series, ru_liq, events)
+    liq = liquefaction(series, events, ru_liq)
     zg = series["z_g"]
     prep = prep or {}
 
@@ -953,9 +816,10 @@ def summary(series, prep=None, cycle_index=None, events=None):
         ]
     else:
         post = zg[onset:][np.isfinite(zg[onset:])]
-        n_il, how = liquefaction_n(events, N, onset)
+        n_il = liquefaction_n(events, onset)
         entries += [
-            _entry("N_IL", "cycles to initial liquefaction (r_u >= ru_liq; %s)" % how, "-",
+            _entry("N_IL", "cycles to initial liquefaction (r_u >= ru_liq; fix grflow/shear's "
+                   "N_IL)", "-",
                    n_il if n_il is not None else NOT_AVAILABLE),
             _entry("z_g_at_IL", "z_g at initial liquefaction", "-", _num(zg[onset])),
             _entry("z_g_post_IL_max", "largest z_g after initial liquefaction", "-",
@@ -1026,7 +890,7 @@ def summary(series, prep=None, cycle_index=None, events=None):
                           "maximum a_c in each cycle n <= N < n+1 (last may be partial)",
                           "-", peak_ac_per_cycle(series, N)))
 
-    n, states, note = choose_cycle(series, ru_liq, cycle_index, events, liq)
+    n, states, note = choose_cycle(series, events, ru_liq, cycle_index, liq)
 
     # the paper's reading of Fig. 5 on cycle C: a_c changes much from C0 to
     # C0', little from C0' to C1 and from C1 to C2 (a_c at the later state

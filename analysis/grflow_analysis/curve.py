@@ -1,14 +1,18 @@
-#!/usr/bin/env python3
+# GRFLOW analysis: the cyclic resistance curve of a campaign.
+# Part of GRFLOW, distributed under the GNU General Public License v2
+# (see LICENSE at the top of the repository).
 """The cyclic resistance curve of a campaign: CSR = tau_amp / p0 against
 the number of cycles to initial liquefaction N_IL.
 
-    /usr/bin/python3 workflows/curve.py OUT RUN_DIR [RUN_DIR ...]
+    grflow-curve OUT RUN_DIR [RUN_DIR ...]
 
-Each RUN_DIR is a shear run (series.txt, prep.json, run.json from the
-workflow).  N_IL and the run-outs come from analysis/grflow_analysis.py
-(the summary's N_IL: the fractional cycle count at the first row with
-r_u >= ru_liq); a run that did not liquefy is a run-out at the cycle count
-it reached.  Writes OUT/curve.json, OUT/curve.md and OUT/curve.png.
+Each RUN_DIR is a shear run (series.txt, events.txt, prep.json, and
+run.json from workflows/resistance_curve.smk).  N_IL is fix
+grflow/shear's, read from events.txt by the summary of grflow_analysis:
+linear in time between the events around the first check with
+r_u >= ru_liq (doc/fix_grflow_shear.rst); a run that did not liquefy is
+a run-out at the cycle count it reached.  Writes OUT/curve.json,
+OUT/curve.md and OUT/curve.png.
 
 The fit: CSR = a N_IL^(-b), by least squares of log CSR on log N_IL over
 the liquefied runs, with the standard errors of a and b from the
@@ -23,8 +27,7 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "analysis"))
-import grflow_analysis as ga  # noqa: E402
+import grflow_analysis as ga
 
 
 def run_result(run_dir):
@@ -34,7 +37,7 @@ def run_result(run_dir):
         meta = json.load(f)
     series = ga.read_series(os.path.join(run_dir, "series.txt"))
     prep = ga.read_prep(os.path.join(run_dir, "prep.json"))
-    summ = ga.summary(series, prep, events=ga.run_events(run_dir, series))
+    summ = ga.summary(series, prep, ga.run_events(run_dir, series))
     entries = {e["name"]: e["measured"] for e in summ["entries"]}
     n_il = entries["N_IL"]
     liquefied = isinstance(n_il, float)
@@ -146,7 +149,8 @@ def figure(c, path):
     plt.close(fig)
 
 
-def main(argv):
+def main(argv=None):
+    argv = sys.argv[1:] if argv is None else argv
     if len(argv) < 2:
         print(__doc__)
         return 2
@@ -162,5 +166,5 @@ def main(argv):
     return 0
 
 
-if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+if __name__ == "__main__":     # python -m grflow_analysis.curve
+    sys.exit(main())

@@ -1,17 +1,16 @@
-#!/usr/bin/env python3
 # GRFLOW analysis: the figures 1-5 and the summary of a run directory.
 # Part of GRFLOW, distributed under the GNU General Public License v2
 # (see LICENSE at the top of the repository).
 """Figures 1-5 of the isochoric cyclic shearing paper and a summary table.
 
-usage: /usr/bin/python3 analysis/make_figures.py RUN_DIR [--out OUTDIR]
-                                                 [--cycle K] [--snapshot STEP]
+usage: grflow-figures RUN_DIR [--out OUTDIR] [--cycle K] [--snapshot STEP]
 
 Writes fig1_snapshots.png, fig2_macro.png, fig3_zg.png, fig4_pc.png,
 fig5_ac_zg.png, summary.json and summary.md into OUTDIR (default
 RUN_DIR/figures) and prints the summary table.  Exit status: 0 on success
 (also when the run never liquefied), 1 if a figure failed unexpectedly,
-2 if RUN_DIR or series.txt is missing or malformed.  See analysis/README.md.
+2 if RUN_DIR, series.txt or events.txt is missing or malformed.  See
+analysis/README.md.
 """
 
 import argparse
@@ -29,7 +28,6 @@ import numpy as np  # noqa: E402
 from matplotlib.collections import EllipseCollection, LineCollection  # noqa: E402
 from matplotlib.patches import Patch  # noqa: E402
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import grflow_analysis as ga  # noqa: E402
 
 LABEL = {"C0": "$C_0$", "C0'": "$C_{0'}$", "C1": "$C_1$",
@@ -46,19 +44,19 @@ MAX_POINTS = 200000     # whole-run curves are thinned to about this many points
 class Run:
     """Everything the figures need, computed once from the series."""
 
-    def __init__(self, run_dir, series, prep, cycle_index):
+    def __init__(self, run_dir, series, prep, events, cycle_index=None):
         self.dir = run_dir
         self.s = series
         self.prep = prep
         self.ru_liq, self.tau_amp = ga.protocol(prep)
-        self.events = ga.run_events(run_dir, series)
+        self.events = events
         self.N = ga.cycle_count(series, self.events)
-        self.liq = ga.liquefaction(series, self.ru_liq, self.events)
+        self.liq = ga.liquefaction(series, self.events, self.ru_liq)
         self.onset = self.liq["onset"]
-        self.n_il = ga.liquefaction_n(self.events, self.N, self.onset)[0]
+        self.n_il = ga.liquefaction_n(self.events, self.onset)
         self.n, self.states, self.note = ga.choose_cycle(
-            series, self.ru_liq, cycle_index, self.events, self.liq)
-        self.crange = (ga.cycle_rows(series, self.n, self.events)
+            series, self.events, self.ru_liq, cycle_index, self.liq)
+        self.crange = (ga.cycle_rows(series, self.events, self.n)
                        if self.n is not None else None)
         self.stride = max(1, int(math.ceil(len(self.N) / MAX_POINTS)))
 
@@ -412,6 +410,11 @@ def main(argv=None):
             return 2
     for w in caught:
         _note(str(w.message))
+    try:
+        events = ga.run_events(run_dir, series)
+    except (ga.FormatError, OSError) as err:
+        print("error: %s" % err, file=sys.stderr)
+        return 2
     prep = None
     prep_path = os.path.join(run_dir, "prep.json")
     try:
@@ -423,8 +426,8 @@ def main(argv=None):
     out = args.out or os.path.join(run_dir, "figures")
     os.makedirs(out, exist_ok=True)
 
-    run = Run(run_dir, series, prep, args.cycle)
-    summ = ga.summary(series, prep, args.cycle, run.events)
+    run = Run(run_dir, series, prep, events, args.cycle)
+    summ = ga.summary(series, prep, run.events, args.cycle)
     summ["run_dir"] = os.path.abspath(run_dir)
     with open(os.path.join(out, "summary.json"), "w") as f:
         json.dump(_json_safe(summ), f, indent=1, allow_nan=False)
@@ -453,5 +456,5 @@ def main(argv=None):
     return 1 if failed else 0
 
 
-if __name__ == "__main__":
+if __name__ == "__main__":     # python -m grflow_analysis.figures
     sys.exit(main())

@@ -1,7 +1,8 @@
 # GRFLOW analysis tests: synthetic run directories with known events.
 # Part of GRFLOW, distributed under the GNU General Public License v2
 # (see LICENSE at the top of the repository).
-"""Tests of analysis/grflow_analysis.py and analysis/make_figures.py.
+"""Tests of the package grflow_analysis (analysis/) and its command
+grflow-figures.
 
 A synthetic run directory is written in the format of inputs/README.md.
 Its fractional cycle count N is built exactly (fractions) quarter by
@@ -10,8 +11,14 @@ quarter, with a different number of rows per quarter, tau = tau_amp sin(2 pi N)
 chosen so that initial liquefaction is at N = 4.4 and the system is liquefied
 for N mod 1/2 in [0.4, 0.5) u [0, 0.1) afterwards, except that in cycle 5 it
 stays liquefied from N = 5.4 to 5.8 (so cycle 5 has no C2' before its C3).
-The run ends at N = 7.3.  The expected values below follow from that design,
-not from the library.
+The run ends at N = 7.3.  Its events.txt holds the events of that design
+(reversal k on the first row of N = k/2 - 1/4, the zero-crossing after it
+on the first row of N = k/2) and N_IL = 4.4, as fix grflow/shear would
+write them.  The expected values below follow from that design, not from
+the library.
+
+Run with the Python of the set-up (scripts/python-env.sh), in which the
+package is installed.
 """
 
 import json
@@ -24,11 +31,11 @@ from fractions import Fraction as F
 import numpy as np
 import pytest
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-ANALYSIS = os.path.dirname(HERE)
-sys.path.insert(0, ANALYSIS)
-import grflow_analysis as ga  # noqa: E402
-import make_figures  # noqa: E402
+import grflow_analysis as ga
+from grflow_analysis import figures
+
+# the package's commands, installed beside the interpreter running the tests
+BIN = os.path.dirname(sys.executable)
 
 TAU_AMP = 25.0e3
 P0 = 1.0e5
@@ -143,11 +150,62 @@ def write_contacts(path, step, pairs, box):
 BOX = [(0.0, 0.008), (0.0, 0.008), (0.0, 0.02)]
 
 
-def make_run(root, liquefy=True, snapshots=True, prep=True, **kw):
+def event_lines(col, events, il_row=None):
+    """The lines of events.txt (step time event reversals N N_IL step_IL)
+    for the start on row 0 and ``events``, (row, kind) in time order with
+    kind 1 a reversal and 2 the first zero-crossing after one, N by the
+    rule of doc/fix_grflow_shear.rst; with initial liquefaction on row
+    ``il_row``, N_IL linear in time between the events around it, written
+    from the event after it on."""
+    lines, k = [(0, 0)], 0
+    for row, kind in events:
+        lines.append((row, kind))
+    out, n_il = [], -1.0
+    marks = []
+    for row, kind in lines:
+        if kind == 1:
+            k += 1
+        n = 0.0 if kind == 0 else (k / 2 - 0.25 if kind == 1 else k / 2)
+        marks.append((row, kind, k, n))
+    for i, (row, kind, k, n) in enumerate(marks):
+        if il_row is not None and n_il < 0 and row > il_row:
+            ra, na = marks[i - 1][0], marks[i - 1][3]
+            ta, tb, t = col["time"][ra], col["time"][row], col["time"][il_row]
+            n_il = na + (n - na) * (t - ta) / (tb - ta)
+        st_il = col["step"][il_row] if il_row is not None and row >= il_row else -1
+        out.append((col["step"][row], col["time"][row], kind, k, n, n_il, st_il))
+    return out
+
+
+def events_table(lines):
+    """``lines`` of events.txt as ga.read_events returns them."""
+    return {c: np.array([l[i] for l in lines], dtype=float)
+            for i, c in enumerate(ga.EVENT_COLUMNS)}
+
+
+def write_events(path, lines):
+    with open(path, "w") as f:
+        f.write("# step time event reversals N N_IL step_IL\n")
+        for l in lines:
+            f.write(" ".join("%.17g" % v for v in l) + "\n")
+
+
+def design_events(col, Ns, liquefy=True):
+    """The events of the construction: reversal k on the first row of
+    quarter 2k - 1, the crossing after it on the first row of quarter 2k."""
+    events = [(i, 1 if int(4 * N) % 2 else 2) for i, N in enumerate(Ns)
+              if i > 0 and (4 * N).denominator == 1]
+    il_row = Ns.index(N_IL) if liquefy else None
+    return event_lines(col, events, il_row)
+
+
+def make_run(root, liquefy=True, snapshots=True, prep=True, events=True, **kw):
     """Write a synthetic run directory; return (dir, columns, exact N, float N)."""
     os.makedirs(root, exist_ok=True)
     col, Ns, Nf = build_series(liquefy, **kw)
     write_series(os.path.join(root, "series.txt"), col)
+    if events:
+        write_events(os.path.join(root, "events.txt"), design_events(col, Ns, liquefy))
     if prep:
         with open(os.path.join(root, "prep.json"), "w") as f:
             json.dump({"N": 8000, "seed": 1, "d_min": 1e-3, "d_max": 2e-3,
@@ -241,67 +299,27 @@ def test_read_dumps(liquefied_run):
 
 # ------------------------------------------------------------ cycles
 
-def test_network_from_snapshot_by_hand():
-    # six particles between walls at z = 0 and 10 (slab 0.8: z in [1, 9)):
-    # 1-4 free and inside, 5 glued, 6 free but outside the slab.
-    # Contacts: 1-2 along z, 2-3 along x, 1-5 along z (glued: only 1's end),
-    # 3-6 along y (only 3's end), 3-4 with fn = 0 (not a contact), so
-    # c = 2, 2, 2, 0: N_p 4, one floater, N_c = 6/2, z_g = 6/3, and the
-    # ends in the fabric are 3 along z, 2 along x, 1 along y.
-    atoms = {"columns": {"id": np.array([1, 2, 3, 4, 5, 6.0]),
-                         "radius": np.full(6, 0.5),
-                         "z": np.array([5.0, 6.0, 6.0, 3.0, 4.0, 9.5]),
-                         "glue": np.array([0, 0, 0, 0, 1, 0.0])}}
-    pairs = [(1, 2, 0, 0, -1, 5.0), (2, 3, 1, 0, 0, 2.0), (5, 1, 0, 0, -1, 1.0),
-             (6, 3, 0, -1, 0, 0.5), (3, 4, 0.9, 0, 0, 0.0)]
-    names = ("id1", "id2", "dx", "dy", "dz", "fn")
-    contacts = {"columns": {n: np.array([p[k] for p in pairs], dtype=float)
-                            for k, n in enumerate(names)}}
-    net = ga.network_from_snapshot(atoms, contacts, 0.0, 10.0, slab=0.8, cmax=4,
-                                   stress=[1.0, 1.0, 4.0, 0.0, 0.0, 0.0])
-    assert (net["N_p"], net["floaters"], net["N_c"]) == (4, 1, 3.0)
-    assert net["z_g"] == pytest.approx(2.0)
-    assert net["z"] == pytest.approx(1.5)
-    assert list(net["P"]) == pytest.approx([0.25, 0.0, 0.75, 0.0, 0.0])
-    a = 7.5 * (np.diag([2.0, 1.0, 3.0]) / 6.0 - np.eye(3) / 3.0)
-    assert net["a"] == pytest.approx(a)
-    assert net["a_c"] == pytest.approx(math.sqrt(1.5 * np.sum(a * a)))   # along z, as s
-    net = ga.network_from_snapshot(atoms, contacts, 0.0, 10.0, slab=0.8, cmax=4,
-                                   stress=[4.0, 4.0, 1.0, 0.0, 0.0, 0.0])
-    assert net["a_c"] < 0.0
-    # a particle inside that overlaps a wall touches it: 4 at z 0.4 -> slab
-    # 1.0 makes it inside and in contact with the bottom wall (along z)
-    atoms["columns"]["z"][3] = 0.4
-    net = ga.network_from_snapshot(atoms, contacts, 0.0, 10.0, slab=1.0, cmax=4)
-    assert (net["N_p"], net["floaters"], net["N_c"]) == (5, 0, 4.0)
-
-
 def test_cycle_count_matches_construction(liquefied_run):
     root, col, Ns, Nf = liquefied_run
     s = ga.read_series(os.path.join(root, "series.txt"))
-    N = ga.cycle_count(s)
+    ev = ga.run_events(root, s)
+    N = ga.cycle_count(s, ev)
     # exact up to round-off everywhere, including the extrapolated last rows
     np.testing.assert_allclose(N, Nf, rtol=0, atol=1e-12)
-    ev = ga.cycle_events(s)
     assert len(ev["reversal_rows"]) == 15
     for k, r in enumerate(ev["reversal_rows"], 1):
         assert Ns[r] == F(k, 2) - F(1, 4)
     for k in range(1, 15):
         assert Ns[ev["crossing_rows"][k]] == F(k, 2)
     assert ev["crossing_rows"][15] is None     # the run stops before it
-
-
-def test_cycle_count_between_samples():
-    """Crossings between samples: the first row with the new sign carries N = k/2."""
-    tau = np.array([0, 10, 20, 25, 12, -3, -20, -25, -5, 4, 15, 20, 24]) * 1e3
-    rev = np.array([0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 2, 2])
-    s = {"time": np.arange(13.0), "reversals": rev, "tau": tau}
-    N = ga.cycle_count(s)
-    expect = [0, 1 / 12, 2 / 12, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875, 1.0,
-              1.125, 1.25, 1.25]               # extrapolated, then capped at +1/4
-    np.testing.assert_allclose(N, expect, atol=1e-12)
-    assert ga.cycle_count({"time": np.arange(3.0), "reversals": np.zeros(3),
-                           "tau": np.array([0, 1.0, 2.0])}).tolist() == [0, 0, 0]
+    # before the first reversal no rate is known: N stays 0 (the start
+    # only); after the last event, extrapolated at the last quarter's rate
+    # and capped at a quarter cycle beyond it
+    s3 = {"time": np.arange(3.0)}
+    assert ga.cycle_count(s3, {"time": [0.0], "N": [0.0]}).tolist() == [0, 0, 0]
+    s9 = {"time": np.arange(9.0)}
+    np.testing.assert_allclose(ga.cycle_count(s9, {"time": [0.0, 2.0], "N": [0.0, 0.25]}),
+                               [0, 0.125, 0.25, 0.375, 0.5, 0.5, 0.5, 0.5, 0.5], atol=1e-15)
 
 
 # ------------------------------------------------------------ the fix's events
@@ -335,7 +353,6 @@ EVENTS = [(0, 0.0, 0, 0, 0.0, -1, -1), (250, 2.5, 1, 1, 0.25, -1, -1),
 def test_fix_events_are_used_as_written(tmp_path):
     s = events_between_rows(tmp_path, EVENTS)
     ev = ga.run_events(str(tmp_path), s)
-    assert ev["source"] == "fix"
     # an event's row: the first row at or after its step
     assert ev["reversal_rows"] == [3, 8]
     assert ev["crossing_rows"] == {0: 0, 1: 5, 2: 10}
@@ -347,8 +364,8 @@ def test_fix_events_are_used_as_written(tmp_path):
     assert N[9] == pytest.approx(0.75 + 0.25 * 1.5 / 2.0, abs=1e-15)
     assert N[10] == pytest.approx(1.0 + 0.25 * 0.5 / 2.0, abs=1e-15)   # extrapolated
     # initial liquefaction: the fix's step (row of step 600), its N_IL as written
-    assert ga.liquefaction(s, 0.99, ev)["onset"] == 6
-    summ = ga.summary(s, None, events=ev)
+    assert ga.liquefaction(s, ev, 0.99)["onset"] == 6
+    summ = ga.summary(s, None, ev)
     n_il = next(e for e in summ["entries"] if e["name"] == "N_IL")
     assert n_il["measured"] == 0.5583333333333333 and "fix" in n_il["description"]
 
@@ -361,15 +378,21 @@ def test_fix_events_crossing_on_the_reversal_check(tmp_path):
     assert ev["reversal_rows"] == [3, 8]
     assert ev["crossing_rows"] == {0: 0, 1: 8, 2: None}
     assert ev["N_IL"] is None and ev["step_IL"] is None
-    assert ga.liquefaction(s, 0.99, ev)["onset"] is None
+    assert ga.liquefaction(s, ev, 0.99)["onset"] is None
 
 
-def test_events_without_the_file_come_from_the_series(liquefied_run):
-    root = liquefied_run[0]
+def test_events_txt_is_the_only_source_of_events(tmp_path):
+    """A run directory without events.txt is an error that says so, not
+    events found again in the series by another rule."""
+    root = make_run(str(tmp_path / "run"), snapshots=False, events=False, quarters=21,
+                    last_fraction=F(0))[0]
     s = ga.read_series(os.path.join(root, "series.txt"))
-    ev = ga.run_events(root, s)
-    assert ev["source"] == "series"
-    assert ev["reversal_rows"] == ga.cycle_events(s)["reversal_rows"]
+    with pytest.raises(ga.FormatError, match="no events.txt"):
+        ga.run_events(root, s)
+    # the library has no rule of its own for them
+    assert not hasattr(ga, "cycle_events")
+    with pytest.raises(TypeError):
+        ga.summary(s, None)
 
 
 @pytest.mark.parametrize("lines, message", [
@@ -389,7 +412,7 @@ def test_read_events_rejects_bad_files(tmp_path, lines, message):
 def test_liquefaction_onset_and_exits(liquefied_run):
     root, col, Ns, Nf = liquefied_run
     s = ga.read_series(os.path.join(root, "series.txt"))
-    liq = ga.liquefaction(s, 0.99)
+    liq = ga.liquefaction(s, ga.run_events(root, s), 0.99)
     assert liq["onset"] == row_at(Ns, N_IL)
     assert [Ns[i] for i in liq["exits"]] == EXITS
     assert [Ns[i] for i in liq["entries"]] == ENTRIES
@@ -398,22 +421,23 @@ def test_liquefaction_onset_and_exits(liquefied_run):
 def test_cycle_states(liquefied_run):
     root, col, Ns, Nf = liquefied_run
     s = ga.read_series(os.path.join(root, "series.txt"))
-    assert ga.post_liquefaction_cycles(s, 0.99) == [5, 6, 7]
+    ev = ga.run_events(root, s)
+    assert ga.post_liquefaction_cycles(s, ev, 0.99) == [5, 6, 7]
     offsets = {"C0": F(0), "C0'": F(1, 10), "C1": F(1, 4), "C2": F(1, 2),
                "C2'": F(3, 5), "C3": F(3, 4)}
-    n, st, note = ga.choose_cycle(s, 0.99)       # cycle 5 lacks C2': cycle 6
+    n, st, note = ga.choose_cycle(s, ev, 0.99)       # cycle 5 lacks C2': cycle 6
     assert n == 6 and note == ""
     assert st == {k: row_at(Ns, 6 + v) for k, v in offsets.items()}
-    n, st, _ = ga.choose_cycle(s, 0.99, index=0)
+    n, st, _ = ga.choose_cycle(s, ev, 0.99, index=0)
     assert n == 5
     assert st["C2'"] is None
     assert {k: Ns[v] for k, v in st.items() if v is not None} == {
         k: 5 + v for k, v in offsets.items() if k != "C2'"}
-    n, st, _ = ga.choose_cycle(s, 0.99, index=2)
+    n, st, _ = ga.choose_cycle(s, ev, 0.99, index=2)
     assert n == 7
     assert [Ns[st[k]] if st[k] is not None else None for k in ga.STATES] == [
         F(7), F(71, 10), F(29, 4), None, None, None]
-    assert ga.choose_cycle(s, 0.99, index=3)[0] is None
+    assert ga.choose_cycle(s, ev, 0.99, index=3)[0] is None
     r = st["C1"]
     np.testing.assert_array_equal(ga.connectivity(s, r), [col["P%d" % c][r] for c in range(13)])
     # over the particles with contacts: P_c / (1 - P_0), P_0 entry 0, sums to 1
@@ -422,26 +446,28 @@ def test_cycle_states(liquefied_run):
     assert nf[0] == 0.0
     np.testing.assert_allclose(nf[1:], pc[1:] / (1.0 - pc[0]), rtol=1e-15)
     assert nf.sum() == pytest.approx(1.0, abs=1e-12)
-    assert ga.cycle_rows(s, 6) == (row_at(Ns, F(6)), row_at(Ns, F(7)))
+    assert ga.cycle_rows(s, ev, 6) == (row_at(Ns, F(6)), row_at(Ns, F(7)))
 
 
 def test_states_edge_rows():
-    """Threshold reached exactly; exits on the C0 row (counts) and on the C1 row (does not)."""
-    tau = np.array([0, 10, 20, 25, 10, -2, -20, -25, -10, 0, 10, 20, 25, 5, -1, -10,
-                    -20, -25, -5, 3]) * 1e3
-    rev = np.array([0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 2, 3, 3, 3, 3, 3, 4, 4, 4])
+    """Threshold reached exactly (the fix's initial liquefaction on row 6);
+    exits on the C0 row (counts) and on the C1 row (does not)."""
     ru = np.array([.5] * 6 + [.99, .98, .995, .98, .98, .995, .98, .995, .995, .995,
                               .98, .98, .98, .98])
-    s = {"time": np.arange(20.0), "reversals": rev, "tau": tau, "r_u": ru}
-    liq = ga.liquefaction(s, 0.99)
+    s = {"step": 100.0 * np.arange(20), "time": np.arange(20.0), "r_u": ru}
+    # reversals on rows 3, 7, 12, 17, the crossings after them on 5, 9, 14, 19
+    ev = ga.fix_events(events_table(event_lines(
+        s, [(3, 1), (5, 2), (7, 1), (9, 2), (12, 1), (14, 2), (17, 1), (19, 2)], il_row=6)), s)
+    assert ev["N_IL"] == pytest.approx(0.625, abs=1e-15) and ev["step_IL"] == 600
+    liq = ga.liquefaction(s, ev, 0.99)
     assert liq["onset"] == 6 and liq["exits"] == [7, 9, 12, 16]
-    assert ga.find_cycle_states(s, 1, 0.99) == {"C0": 9, "C0'": 9, "C1": 12, "C2": 14,
-                                                "C2'": 16, "C3": 17}
-    assert ga.find_cycle_states(s, 0, 0.99) == {"C0": 0, "C0'": None, "C1": 3, "C2": 5,
-                                                "C2'": None, "C3": 7}
-    assert ga.post_liquefaction_cycles(s, 0.99) == [1, 2]
-    assert ga.choose_cycle(s, 0.99)[:2] == (1, ga.find_cycle_states(s, 1, 0.99))
-    np.testing.assert_allclose(ga.cycle_count(s)[[3, 5, 7, 9, 12, 14, 17, 19]],
+    assert ga.find_cycle_states(s, ev, 1, 0.99) == {"C0": 9, "C0'": 9, "C1": 12, "C2": 14,
+                                                    "C2'": 16, "C3": 17}
+    assert ga.find_cycle_states(s, ev, 0, 0.99) == {"C0": 0, "C0'": None, "C1": 3, "C2": 5,
+                                                    "C2'": None, "C3": 7}
+    assert ga.post_liquefaction_cycles(s, ev, 0.99) == [1, 2]
+    assert ga.choose_cycle(s, ev, 0.99)[:2] == (1, ga.find_cycle_states(s, ev, 1, 0.99))
+    np.testing.assert_allclose(ga.cycle_count(s, ev)[[3, 5, 7, 9, 12, 14, 17, 19]],
                                [.25, .5, .75, 1, 1.25, 1.5, 1.75, 2], atol=1e-12)
 
 
@@ -459,7 +485,7 @@ def test_match_rules():
 def test_peak_ac_per_cycle(liquefied_run):
     root, _, _, Nf = liquefied_run
     s = ga.read_series(os.path.join(root, "series.txt"))
-    peaks = ga.peak_ac_per_cycle(s, ga.cycle_count(s))
+    peaks = ga.peak_ac_per_cycle(s, ga.cycle_count(s, ga.run_events(root, s)))
     np.testing.assert_allclose(peaks, [0.1 + 0.05 * n for n in range(8)], atol=1e-12)
 
 
@@ -472,7 +498,7 @@ def entries(summ):
 def test_summary_liquefied(liquefied_run):
     root, col, Ns, Nf = liquefied_run
     s = ga.read_series(os.path.join(root, "series.txt"))
-    summ = ga.summary(s, ga.read_prep(os.path.join(root, "prep.json")))
+    summ = ga.summary(s, ga.read_prep(os.path.join(root, "prep.json")), ga.run_events(root, s))
     e = entries(summ)
     assert e["e_prep"]["measured"] == 0.650 and e["e_prep"]["paper"] == 0.647
     assert e["e_prep"]["match"] is True
@@ -521,7 +547,7 @@ def test_summary_a_c_changes_in_cycle_C(liquefied_run):
     # a_c at the states of cycle C, from the construction's rows
     root, col, Ns, Nf = liquefied_run
     s = ga.read_series(os.path.join(root, "series.txt"))
-    summ = ga.summary(s, ga.read_prep(os.path.join(root, "prep.json")))
+    summ = ga.summary(s, ga.read_prep(os.path.join(root, "prep.json")), ga.run_events(root, s))
     e = entries(summ)
     st = {k: v["row"] for k, v in summ["cycle_C"]["states"].items()}
     for name, a, b in (("a_c_change_C0_C0p", "C0", "C0'"), ("a_c_change_C0p_C1", "C0'", "C1"),
@@ -535,7 +561,7 @@ def test_summary_splits_states_at_3_6(liquefied_run):
     # by r_u at 0.99
     root, col, Ns, Nf = liquefied_run
     s = ga.read_series(os.path.join(root, "series.txt"))
-    e = entries(ga.summary(s, ga.read_prep(os.path.join(root, "prep.json"))))
+    e = entries(ga.summary(s, ga.read_prep(os.path.join(root, "prep.json")), ga.run_events(root, s)))
     onset = next(k for k, ru in enumerate(col["r_u"]) if ru >= 0.99)
     nonliq = [zg for ru, zg in zip(col["r_u"][onset:], col["z_g"][onset:]) if ru < 0.99]
     liq = [zg for ru, zg in zip(col["r_u"][onset:], col["z_g"][onset:]) if ru >= 0.99]
@@ -550,7 +576,7 @@ def test_summary_splits_states_at_3_6(liquefied_run):
 def test_summary_never_liquefied(dry_run):
     root, _, _, _ = dry_run
     s = ga.read_series(os.path.join(root, "series.txt"))
-    summ = ga.summary(s, ga.read_prep(os.path.join(root, "prep.json")))
+    summ = ga.summary(s, ga.read_prep(os.path.join(root, "prep.json")), ga.run_events(root, s))
     e = entries(summ)
     for name in ("N_IL", "z_g_at_IL", "z_g_post_IL_min", "z_g_post_IL_max", "n_exits",
                  "z_g_at_exits", "z_g_exit_mean", "z_g_exit_std"):
@@ -559,7 +585,7 @@ def test_summary_never_liquefied(dry_run):
     assert e["e_prep"]["match"] is True
     assert summ["cycle_C"]["cycle"] is None
     # without prep.json the preparation values are not available, never a match
-    summ = ga.summary(s, None)
+    summ = ga.summary(s, None, ga.run_events(root, s))
     assert entries(summ)["e_prep"]["measured"] == "not available"
     assert entries(summ)["e_prep"]["match"] is False
     assert summ["tau_amp"] == 25e3 and summ["ru_liq"] == 0.99
@@ -570,7 +596,7 @@ def test_summary_never_liquefied(dry_run):
 def test_command_liquefied(liquefied_run, tmp_path, capsys):
     root = liquefied_run[0]
     out = str(tmp_path / "figs")
-    assert make_figures.main([root, "--out", out]) == 0
+    assert figures.main([root, "--out", out]) == 0
     for name in FIGURES + ("summary.json", "summary.md"):
         assert os.path.getsize(os.path.join(out, name)) > 1000 or name.startswith("summary")
     with open(os.path.join(out, "summary.json")) as f:
@@ -582,7 +608,7 @@ def test_command_liquefied(liquefied_run, tmp_path, capsys):
     assert "| e_prep" in md and "0.647" in md
     # --cycle picks another post-liquefaction cycle, incomplete ones included
     out2 = str(tmp_path / "figs2")
-    assert make_figures.main([root, "--out", out2, "--cycle", "2"]) == 0
+    assert figures.main([root, "--out", out2, "--cycle", "2"]) == 0
     with open(os.path.join(out2, "summary.json")) as f:
         summ = json.load(f)
     assert summ["cycle_C"]["cycle"] == 7
@@ -595,7 +621,7 @@ def test_command_liquefied(liquefied_run, tmp_path, capsys):
 def _run(root):
     s = ga.read_series(os.path.join(root, "series.txt"))
     prep = ga.read_prep(os.path.join(root, "prep.json"))
-    return make_figures.Run(root, s, prep, None)
+    return figures.Run(root, s, prep, ga.run_events(root, s))
 
 
 def _hlines(ax):
@@ -612,7 +638,7 @@ def _state_marks(ax):
     """label -> (x, y) of the states' markers on an axes"""
     out = {}
     for c in ax.collections:
-        if c.get_label() in make_figures.LABEL.values():
+        if c.get_label() in figures.LABEL.values():
             out[c.get_label()] = tuple(c.get_offsets()[0])
     return out
 
@@ -627,10 +653,10 @@ def test_figures_show_what_they_claim(liquefied_run, tmp_path):
     s = run.s
     rows = run.states
     assert run.n == 6 and all(r is not None for r in rows.values())
-    labels = {make_figures.LABEL[st]: r for st, r in rows.items()}
+    labels = {figures.LABEL[st]: r for st, r in rows.items()}
     try:
         # Fig. 2: tau against p and gamma, the amplitude lines, cycle C and its states
-        fig = make_figures.fig2(run, out, keep=True)
+        fig = figures.fig2(run, out, keep=True)
         for ax, x in zip(fig.axes[:2], (s["p"] / 1e3, 100 * s["gamma"])):
             names = [l.get_label() for l in ax.get_lines()]
             assert {"pre-liquefaction", "post-liquefaction", "cycle C (N = 6-7)"} <= set(names)
@@ -642,7 +668,7 @@ def test_figures_show_what_they_claim(liquefied_run, tmp_path):
         assert fig.axes[0].get_xlabel() == "p (kPa)"
         assert fig.axes[1].get_xlabel() == r"$\gamma$ (%)"
         # Fig. 3: z_g(N), z_g = 3.6, N_IL = 4.4, the inset on cycle C with its states
-        fig = make_figures.fig3(run, out, keep=True)
+        fig = figures.fig3(run, out, keep=True)
         ax = fig.axes[0]
         assert (ax.get_xlabel(), ax.get_ylabel()) == ("N (cycles)", "$z_g$")
         assert 3.6 in _hlines(ax)
@@ -655,7 +681,7 @@ def test_figures_show_what_they_claim(liquefied_run, tmp_path):
         for lab, r in labels.items():
             assert marks[lab] == pytest.approx((run.N[r], s["z_g"][r]), abs=1e-12)
         # Fig. 4: P_c at the six states, over all particles and over those with contacts
-        fig = make_figures.fig4(run, out, keep=True)
+        fig = figures.fig4(run, out, keep=True)
         for k, ax in enumerate(fig.axes[:2]):
             assert len(ax.containers) == 6
             for bars, st in zip(ax.containers, ga.STATES):
@@ -664,7 +690,7 @@ def test_figures_show_what_they_claim(liquefied_run, tmp_path):
                 want = pc if k == 0 else np.concatenate([[0.0], pc[1:] / (1.0 - pc[0])])
                 assert [b.get_height() for b in bars] == pytest.approx(list(want), abs=1e-12)
         # Fig. 5: a_c against z_g, z_g = 3.6, cycle C and its states
-        fig = make_figures.fig5(run, out, keep=True)
+        fig = figures.fig5(run, out, keep=True)
         ax = fig.axes[0]
         assert (ax.get_xlabel(), ax.get_ylabel()) == ("$z_g$", "$a_c$")
         assert _vlines(ax) == [3.6]
@@ -672,31 +698,31 @@ def test_figures_show_what_they_claim(liquefied_run, tmp_path):
         for lab, r in labels.items():
             assert marks[lab] == pytest.approx((s["z_g"][r], s["a_c"][r]), abs=1e-12)
         # Fig. 1: both side views, every particle of the snapshots drawn
-        fig = make_figures.fig1(run, out, keep=True)
+        fig = figures.fig1(run, out, keep=True)
         for ax in fig.axes[:2]:
             assert (ax.get_xlabel(), ax.get_ylabel()) == ("x (mm)", "z (mm)")
             assert len(ax.collections[0].get_offsets()) == 300
     finally:
-        make_figures.plt.close("all")
+        figures.plt.close("all")
 
 
 def test_figures_of_a_run_that_never_liquefied(dry_run, tmp_path):
     run = _run(dry_run[0])
     try:
-        fig = make_figures.fig3(run, str(tmp_path), keep=True)
+        fig = figures.fig3(run, str(tmp_path), keep=True)
         ax = fig.axes[0]
         assert _vlines(ax) == []                      # no N_IL line
         assert any("not reached" in t.get_text() for t in ax.texts)
-        fig = make_figures.fig4(run, str(tmp_path), keep=True)
+        fig = figures.fig4(run, str(tmp_path), keep=True)
         assert all(len(a.containers) == 0 for a in fig.axes[:2])
         assert any("cycle C not found" in t.get_text() for t in fig.axes[0].texts)
     finally:
-        make_figures.plt.close("all")
+        figures.plt.close("all")
 
 
 def test_command_never_liquefied_default_out(dry_run, capsys):
     root = dry_run[0]
-    assert make_figures.main([root]) == 0
+    assert figures.main([root]) == 0
     out = os.path.join(root, "figures")
     for name in FIGURES + ("summary.json", "summary.md"):
         assert os.path.isfile(os.path.join(out, name)), name
@@ -709,7 +735,7 @@ def test_command_never_liquefied_default_out(dry_run, capsys):
 def test_command_without_snapshots_or_prep(tmp_path, capsys):
     root = make_run(str(tmp_path / "run"), snapshots=False, prep=False,
                     quarters=21, last_fraction=F(0))[0]
-    assert make_figures.main([root]) == 0
+    assert figures.main([root]) == 0
     out = os.path.join(root, "figures")
     assert not os.path.exists(os.path.join(out, "fig1_snapshots.png"))
     for name in FIGURES[1:]:
@@ -726,7 +752,7 @@ def _series_lines():
 
 
 @pytest.mark.parametrize("case", ["ragged", "text", "no_tau", "header_only", "no_series",
-                                  "no_dir"])
+                                  "no_dir", "no_events", "bad_events"])
 def test_malformed_input_exit_2(tmp_path, capsys, case):
     root = tmp_path / "run"
     head, rows = _series_lines()
@@ -742,15 +768,38 @@ def test_malformed_input_exit_2(tmp_path, capsys, case):
         rows = []
     if case not in ("no_series", "no_dir"):
         (root / "series.txt").write_text(head + "\n" + "\n".join(rows) + "\n")
-    assert make_figures.main([str(root)]) == 2
-    assert "error" in capsys.readouterr().err
+    if case == "bad_events":
+        (root / "events.txt").write_text("0 0 1 1 0.25 -1 -1\n")
+    assert figures.main([str(root)]) == 2
+    err = capsys.readouterr().err
+    assert "error" in err
+    if case == "no_events":
+        assert "no events.txt" in err
+    assert not (root / "figures").exists()
 
 
-def test_cli_subprocess_exit_codes(tmp_path):
-    script = os.path.join(ANALYSIS, "make_figures.py")
-    bad = subprocess.run([sys.executable, script, str(tmp_path / "absent")],
+def test_installed_command_from_any_directory(liquefied_run, tmp_path):
+    """The set-up's commands and import work from a directory that is
+    neither analysis/ nor the repository, with no PYTHONPATH: the package is
+    installed, not found through the working directory."""
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    env["MPLBACKEND"] = "Agg"
+    where = subprocess.run([sys.executable, "-c",
+                            "import grflow_analysis, grflow_analysis.figures; "
+                            "print(grflow_analysis.__file__)"],
+                           cwd=tmp_path, env=env, capture_output=True, text=True)
+    assert where.returncode == 0, where.stderr
+    cmd = os.path.join(BIN, "grflow-figures")
+    assert os.access(cmd, os.X_OK), "%s: not installed (scripts/python-env.sh)" % cmd
+    bad = subprocess.run([cmd, str(tmp_path / "absent")], cwd=tmp_path, env=env,
                          capture_output=True, text=True)
     assert bad.returncode == 2 and "does not exist" in bad.stderr
+    good = subprocess.run([cmd, liquefied_run[0], "--out", str(tmp_path / "figs")],
+                          cwd=tmp_path, env=env, capture_output=True, text=True, timeout=600)
+    assert good.returncode == 0, good.stdout[-2000:] + good.stderr[-2000:]
+    assert (tmp_path / "figs" / "summary.json").is_file()
+    for name in ("grflow-curve",):
+        assert os.access(os.path.join(BIN, name), os.X_OK), name
 
 
 def test_static_redundancy():

@@ -28,18 +28,19 @@ import math
 import os
 import signal
 import subprocess
-import sys
 import time
 import warnings
 
 import pytest
+
+import grflow_analysis as ga
+from grflow_reference import network_from_snapshot, series_events
 
 LIGGGHTS = os.environ.get("LIGGGHTS", "liggghts")
 MPIEXEC = os.environ.get("MPIEXEC", "mpirun")
 INPUTS = os.path.abspath(os.environ.get(
     "GRFLOW_INPUTS", os.path.join(os.path.dirname(__file__), "..", "..", "inputs")))
 DECK = os.path.join(INPUTS, "liggghts", "cyclic_shear.liggghts")
-ANALYSIS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "analysis")
 COLUMNS = ("step time reversals direction x_w gamma tau p r_u z_g a_c N_c N_p floaters "
            "sxx syy szz sxy sxz syz zlo zhi inertial " +
            " ".join(f"P{c}" for c in range(13))).split()
@@ -47,9 +48,6 @@ COLUMNS = ("step time reversals direction x_w gamma tau p r_u z_g a_c N_c N_p fl
 # liquefaction within a few cycles (N_IL = 6.0 in the build of 2026-11-26)
 SMALL = {"preset": "quick", "N": "300", "tau_amp": "40e3", "n_post": "1",
          "series_every": "50", "max_steps": "1000000"}
-
-sys.path.insert(0, ANALYSIS)
-import grflow_analysis as ga  # noqa: E402
 
 
 def liggghts_cmd(outdir, cache, screen=False, nprocs=1, **var):
@@ -208,8 +206,8 @@ def test_fix_events_agree_with_the_series(protocol):
     series = ga.read_series(str(out / "series.txt"))
     table = ga.read_events(str(out / "events.txt"))
     fix = ga.run_events(str(out), series)
-    own = ga.cycle_events(series)
-    assert fix["source"] == "fix"
+    ru_liq = json.loads((out / "prep.json").read_text())["ru_liq"]
+    own = series_events(series, ru_liq)
     n_rev = int(series["reversals"][-1])
     assert n_rev >= 4 and len(fix["reversal_rows"]) == len(own["reversal_rows"]) == n_rev
     assert fix["reversal_rows"] == own["reversal_rows"]
@@ -219,8 +217,7 @@ def test_fix_events_agree_with_the_series(protocol):
     assert all(s % 10 == 0 for s in table["step"])    # on the checks (check_every 10)
     for kind, k, n in zip(table["event"][1:], table["reversals"][1:], table["N"][1:]):
         assert n == (0.5 * k - 0.25 if kind == 1 else 0.5 * k)
-    ru_liq = json.loads((out / "prep.json").read_text())["ru_liq"]
-    onset_series = ga.liquefaction(series, ru_liq)["onset"]
+    onset_series = own["onset"]
     assert fix["step_IL"] is not None and fix["step_IL"] <= series["step"][onset_series]
     before = table["step"] <= fix["step_IL"]
     assert table["N"][before][-1] <= fix["N_IL"] <= table["N"][~before][0]
@@ -241,7 +238,7 @@ def test_fix_events_agree_with_the_series(protocol):
 
 
 def check_snapshots_against_series(out):
-    """On every snapshot step with a series row, analysis/network_from_snapshot
+    """On every snapshot step with a series row, grflow_reference.network_from_snapshot
     gives the compute's counts exactly and z_g, P_c, a_c to round-off (the
     LIGGGHTS contacts files have 10 digits)."""
     series = ga.read_series(str(out / "series.txt"))
@@ -261,8 +258,8 @@ def check_snapshots_against_series(out):
         contacts = ga.read_dump_local(path)
         assert atoms["step"] == contacts["step"] == step
         stress = [series[c][k] for c in ("sxx", "syy", "szz", "sxy", "sxz", "syz")]
-        net = ga.network_from_snapshot(atoms, contacts, series["zlo"][k], series["zhi"][k],
-                                       stress=stress)
+        net = network_from_snapshot(atoms, contacts, series["zlo"][k], series["zhi"][k],
+                                    stress=stress)
         where = f"{out.name} step {step}"
         assert net["N_p"] == series["N_p"][k], where
         assert net["floaters"] == series["floaters"][k], where

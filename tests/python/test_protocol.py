@@ -14,29 +14,28 @@ Environment: LMP (lmp binary), GRFLOW_INPUTS (the inputs/ directory).
 """
 
 import json
+import math
 import os
 import signal
 import subprocess
-import sys
 import time
 import warnings
 
+import numpy as np
 import pytest
 
+import grflow_analysis as ga
+from grflow_reference import network_from_snapshot, series_events
 from lmprun import LMP
 
 INPUTS = os.environ.get("GRFLOW_INPUTS",
                         os.path.join(os.path.dirname(__file__), "..", "..", "inputs"))
 DECK = os.path.join(INPUTS, "cyclic_shear.lmp")
-ANALYSIS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "analysis")
 STOCK_DECK = os.path.join(INPUTS, "cyclic_shear_stock.lmp")
 COLUMNS = ("step time reversals direction x_w gamma tau p r_u z_g a_c N_c N_p floaters "
            "sxx syy szz sxy sxz syz zlo zhi inertial " +
            " ".join(f"P{c}" for c in range(13))).split()
 SMALL = {"preset": "quick", "N": "500", "n_post": "1", "series_every": "50"}
-
-sys.path.insert(0, ANALYSIS)
-import grflow_analysis as ga  # noqa: E402
 
 
 def lmp_cmd(outdir, screen=False, deck=DECK, **var):
@@ -165,8 +164,8 @@ def test_whole_protocol_reaches_liquefaction(protocol):
 def test_fix_events_agree_with_the_series(protocol):
     """N has one owner, fix grflow/shear: events.txt holds its events and
     N_IL, analysis/ takes them from there, and the deck's last message
-    prints the same N_IL.  The analysis's own detection from the series
-    (kept for runs without events.txt) is the independent check: the series
+    prints the same N_IL.  A detection from the series' rows, in the tests
+    (grflow_reference), is the independent check: the series
     is sampled every series_every steps at steps where the fix also checks,
     so a reversal is first seen on the first row at or after the fix's
     step, and a zero-crossing or initial liquefaction never on a row before
@@ -175,8 +174,8 @@ def test_fix_events_agree_with_the_series(protocol):
     series = ga.read_series(str(out / "series.txt"))
     table = ga.read_events(str(out / "events.txt"))
     fix = ga.run_events(str(out), series)
-    own = ga.cycle_events(series)
-    assert fix["source"] == "fix"
+    ru_liq = json.loads((out / "prep.json").read_text())["ru_liq"]
+    own = series_events(series, ru_liq)
     n_rev = int(series["reversals"][-1])
     assert n_rev >= 4 and len(fix["reversal_rows"]) == len(own["reversal_rows"]) == n_rev
     assert fix["reversal_rows"] == own["reversal_rows"]
@@ -190,8 +189,7 @@ def test_fix_events_agree_with_the_series(protocol):
     for kind, k, n in zip(table["event"][1:], table["reversals"][1:], table["N"][1:]):
         assert n == (0.5 * k - 0.25 if kind == 1 else 0.5 * k)
     # initial liquefaction: the fix's step, N_IL between the events around it
-    ru_liq = json.loads((out / "prep.json").read_text())["ru_liq"]
-    onset_series = ga.liquefaction(series, ru_liq)["onset"]
+    onset_series = own["onset"]
     assert fix["step_IL"] is not None and fix["step_IL"] <= series["step"][onset_series]
     before = table["step"] <= fix["step_IL"]
     n_a, n_b = table["N"][before][-1], table["N"][~before][0]
@@ -211,7 +209,7 @@ def test_fix_events_agree_with_the_series(protocol):
 def check_snapshots_against_series(out):
     """A step's atoms and contacts snapshots are enough to recompute the
     contact network offline: on every snapshot step that has a series row,
-    analysis/network_from_snapshot (Python, from the dumps) gives the
+    grflow_reference.network_from_snapshot (Python, from the dumps) gives the
     compute's N_p, floaters, N_c, z_g, P_c and a_c (C++, in the run).
     Returns the number of steps compared and of fn = 0 entries left out."""
     series = ga.read_series(str(out / "series.txt"))
@@ -225,8 +223,8 @@ def check_snapshots_against_series(out):
         contacts = ga.read_dump_local(path)
         assert atoms["step"] == contacts["step"] == step
         stress = [series[c][k] for c in ("sxx", "syy", "szz", "sxy", "sxz", "syz")]
-        net = ga.network_from_snapshot(atoms, contacts, series["zlo"][k], series["zhi"][k],
-                                       stress=stress)
+        net = network_from_snapshot(atoms, contacts, series["zlo"][k], series["zhi"][k],
+                                    stress=stress)
         where = f"{out.name} step {step}"
         # counts exactly; the rest to the digits of series.txt (z_g and a_c
         # %.8g, P_c %.6g) and of the dumps (%g: branch vectors to 6 digits)
@@ -247,6 +245,60 @@ def check_snapshots_against_series(out):
 def test_snapshots_hold_the_series_network(protocol):
     compared, _ = check_snapshots_against_series(protocol[0])
     assert compared >= 3
+
+
+def test_reference_network_by_hand():
+    """grflow_reference.network_from_snapshot on a hand-made snapshot: six
+    particles between walls at z = 0 and 10 (slab 0.8: z in [1, 9)):
+    1-4 free and inside, 5 glued, 6 free but outside the slab.  Contacts:
+    1-2 along z, 2-3 along x, 1-5 along z (glued: only 1's end), 3-6 along
+    y (only 3's end), 3-4 with fn = 0 (not a contact), so c = 2, 2, 2, 0:
+    N_p 4, one floater, N_c = 6/2, z_g = 6/3, and the ends in the fabric
+    are 3 along z, 2 along x, 1 along y."""
+    atoms = {"columns": {"id": np.array([1, 2, 3, 4, 5, 6.0]),
+                         "radius": np.full(6, 0.5),
+                         "z": np.array([5.0, 6.0, 6.0, 3.0, 4.0, 9.5]),
+                         "glue": np.array([0, 0, 0, 0, 1, 0.0])}}
+    pairs = [(1, 2, 0, 0, -1, 5.0), (2, 3, 1, 0, 0, 2.0), (5, 1, 0, 0, -1, 1.0),
+             (6, 3, 0, -1, 0, 0.5), (3, 4, 0.9, 0, 0, 0.0)]
+    names = ("id1", "id2", "dx", "dy", "dz", "fn")
+    contacts = {"columns": {n: np.array([p[k] for p in pairs], dtype=float)
+                            for k, n in enumerate(names)}}
+    net = network_from_snapshot(atoms, contacts, 0.0, 10.0, slab=0.8, cmax=4,
+                                stress=[1.0, 1.0, 4.0, 0.0, 0.0, 0.0])
+    assert (net["N_p"], net["floaters"], net["N_c"]) == (4, 1, 3.0)
+    assert net["z_g"] == pytest.approx(2.0)
+    assert net["z"] == pytest.approx(1.5)
+    assert list(net["P"]) == pytest.approx([0.25, 0.0, 0.75, 0.0, 0.0])
+    a = 7.5 * (np.diag([2.0, 1.0, 3.0]) / 6.0 - np.eye(3) / 3.0)
+    assert net["a"] == pytest.approx(a)
+    assert net["a_c"] == pytest.approx(math.sqrt(1.5 * np.sum(a * a)))   # along z, as s
+    net = network_from_snapshot(atoms, contacts, 0.0, 10.0, slab=0.8, cmax=4,
+                                stress=[4.0, 4.0, 1.0, 0.0, 0.0, 0.0])
+    assert net["a_c"] < 0.0
+    # a particle inside that overlaps a wall touches it: 4 at z 0.4 -> slab
+    # 1.0 makes it inside and in contact with the bottom wall (along z)
+    atoms["columns"]["z"][3] = 0.4
+    net = network_from_snapshot(atoms, contacts, 0.0, 10.0, slab=1.0, cmax=4)
+    assert (net["N_p"], net["floaters"], net["N_c"]) == (5, 0, 4.0)
+
+
+def test_reference_series_events_between_samples():
+    """grflow_reference.series_events: a crossing between samples is on the
+    first row with the new sign (N = k/2 there); initial liquefaction on the
+    first row with r_u >= ru_liq; the analysis draws N between them."""
+    tau = np.array([0, 10, 20, 25, 12, -3, -20, -25, -5, 4, 15, 20, 24]) * 1e3
+    rev = np.array([0, 0, 0, 1, 1, 1, 1, 2, 2, 2, 2, 2, 2])
+    ru = np.array([0.5] * 6 + [0.99] * 7)
+    s = {"step": 10.0 * np.arange(13), "time": np.arange(13.0), "reversals": rev,
+         "tau": tau, "r_u": ru}
+    ev = series_events(s, 0.99)
+    assert ev["reversal_rows"] == [3, 7] and ev["crossing_rows"] == {0: 0, 1: 5, 2: 9}
+    assert (ev["onset"], ev["step_IL"]) == (6, 60)
+    assert ev["N_IL"] == pytest.approx(0.5 + 0.25 / 2, abs=1e-15)
+    expect = [0, 1 / 12, 2 / 12, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875, 1.0,
+              1.125, 1.25, 1.25]               # extrapolated, then capped at +1/4
+    np.testing.assert_allclose(ga.cycle_count(s, ev), expect, atol=1e-12)
 
 
 def test_sizes_follow_the_papers_distribution(protocol):

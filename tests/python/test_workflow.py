@@ -1,17 +1,19 @@
-"""workflows/resistance_curve.smk and workflows/curve.py: the cyclic
-resistance curve as one Snakemake workflow.
+"""workflows/resistance_curve.smk and grflow-curve (grflow_analysis.curve):
+the cyclic resistance curve as one Snakemake workflow.
 
 - the fit recovers a known power law (exactly from exact data, within its
   standard errors from noisy data);
 - a tiny campaign (2 CSR values, 1 seed, 300 spheres) runs end to end: one
   CSR liquefies, the other is a run-out at max_cycles; the run directories
-  are ones analysis/make_figures.py reads;
+  are ones grflow-figures reads;
 - stopped after one run, the campaign plans only the other run and the curve;
   killed during a run, it plans that run, the rest and the curve, not the
   preparation;
 - the SLURM profile's dry run plans the job graph without a cluster.
 
-Environment: LMP (lmp binary).
+Environment: LMP (lmp binary).  The commands grflow-curve, which the
+workflow runs, and grflow-figures are the set-up's, beside the Python that
+runs the tests (scripts/python-env.sh).
 """
 import json
 import os
@@ -22,11 +24,13 @@ import sys
 import numpy as np
 import pytest
 
+from grflow_analysis import curve
+
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 SMK = os.path.join(ROOT, "workflows", "resistance_curve.smk")
 PROFILE = os.path.join(ROOT, "workflows", "profiles", "slurm")
-sys.path.insert(0, os.path.join(ROOT, "workflows"))
-import curve  # noqa: E402
+BIN = os.path.dirname(sys.executable)       # grflow-curve, grflow-figures
+ENV = dict(os.environ, PATH=BIN + os.pathsep + os.environ.get("PATH", ""), MPLBACKEND="Agg")
 
 LMP = os.environ.get("LMP", "lmp")
 SNAKEMAKE = shutil.which("snakemake")
@@ -78,7 +82,7 @@ def planned(proc):
 
 def snakemake(args, cwd, check=True):
     proc = subprocess.run([SNAKEMAKE, "-s", SMK] + args, cwd=cwd, capture_output=True,
-                          text=True, timeout=900)
+                          text=True, timeout=900, env=ENV)
     if check:
         assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
     return proc
@@ -117,10 +121,9 @@ def test_tiny_campaign_end_to_end(tmp_path):
     assert (out / "seed1" / "csr0.45" / "prep.restart").resolve() == \
         (out / "seed1" / "prep" / "prep.restart").resolve()
 
-    # a run directory is one analysis/make_figures.py reads
-    proc = subprocess.run(["/usr/bin/python3", os.path.join(ROOT, "analysis", "make_figures.py"),
-                           str(out / "seed1" / "csr0.45")], capture_output=True, text=True,
-                          env=dict(os.environ, MPLBACKEND="Agg"), timeout=600)
+    # a run directory is one grflow-figures reads
+    proc = subprocess.run(["grflow-figures", str(out / "seed1" / "csr0.45")],
+                          capture_output=True, text=True, env=ENV, timeout=600)
     assert proc.returncode == 0, proc.stdout[-2000:] + proc.stderr[-2000:]
 
 
@@ -137,7 +140,7 @@ def test_killed_campaign_reruns_only_the_missing_work(tmp_path):
               "vars=N 300", "max_cycles=20"]
     proc = subprocess.Popen([SNAKEMAKE, "-s", SMK, "--cores", "1"] + config, cwd=tmp_path,
                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                            start_new_session=True)
+                            start_new_session=True, env=ENV)
     deadline = time.time() + 600
     # a shear run has written its first series rows
     while not any(p.stat().st_size > 2000 for p in out.glob("seed1/csr*/series.txt")):
