@@ -177,26 +177,20 @@ namespace GRFLOW {
      normal force along n: k_n delta - c_n v.n.  Clipped (the default) it is
      max(k_n delta - c_n v.n, 0): no attraction.  Unclipped it is the
      linear spring-dashpot as written, negative (attraction through the
-     dashpot) near the end of a fast separation.  Either way the Coulomb
-     caps of sliding, rolling and torsion are mu max(f_n, 0), the clipped
-     force (normal_force_clipped()): a contact in tension resists no
-     tangential motion, as one that carries no force.
+     dashpot) near the end of a fast separation.  The Coulomb caps of
+     sliding, rolling and torsion are mu |f_n| under both laws (clipped:
+     mu f_n, as before), as LAMMPS pair granular without limit_damping,
+     gran/hooke/history and MercuryDPM's linear viscoelastic law have them:
+     a contact in tension still resists sliding up to mu |f_n|.
   ------------------------------------------------------------------------- */
 
-  static GRFLOW_INLINE double normal_force_clipped(double kn, double cn, double delta, double vn)
-  {
-    const double fn = kn * delta - cn * vn;
-    return (fn > 0.0) ? fn : 0.0;
-  }
-
-  // the force of law normal_law (NORMAL_CLIPPED or NORMAL_UNCLIPPED);
-  // fn_cap gets the clipped force, which the caps use
+  // the force of law normal_law (NORMAL_CLIPPED or NORMAL_UNCLIPPED); the
+  // caps use its magnitude (fabs() of a clipped force is the force itself)
   static GRFLOW_INLINE double normal_force(int normal_law, double kn, double cn, double delta,
-                                           double vn, double &fn_cap)
+                                           double vn)
   {
     const double fn = kn * delta - cn * vn;
-    fn_cap = (fn > 0.0) ? fn : 0.0;
-    return (normal_law == NORMAL_UNCLIPPED) ? fn : fn_cap;
+    return (normal_law == NORMAL_UNCLIPPED) ? fn : ((fn > 0.0) ? fn : 0.0);
   }
 
   /* ----------------------------------------------------------------------
@@ -218,8 +212,8 @@ namespace GRFLOW {
     // normal
 
     const double vn = dot3(vrel, n);
-    double fnc;    // the clipped force, for the caps
-    const double fn = normal_force(c.normal_law, c.kn, c.cn, g.delta, vn, fnc);
+    const double fn = normal_force(c.normal_law, c.kn, c.cn, g.delta, vn);
+    const double fnc = fabs(fn);    // for the caps
     out.fn = fn;
 
     // sliding: velocity of the material points at the contact point
@@ -391,8 +385,8 @@ namespace GRFLOW {
     // normal
 
     const double vn = dot3(vrel, n);
-    double fnc;    // the clipped force, for the caps
-    const double fn = normal_force(c.normal_law, c.kn, c.cn, g.delta, vn, fnc);
+    const double fn = normal_force(c.normal_law, c.kn, c.cn, g.delta, vn);
+    const double fnc = fabs(fn);    // for the caps
     out.fn = fn;
 
     // mode velocities: lane 0 sliding (contact-point velocity), lane 1
