@@ -5,7 +5,8 @@ set -euo pipefail
 
 pkgs=(build-essential cmake ninja-build ccache xz-utils ca-certificates patch
       libopenmpi-dev openmpi-bin libgtest-dev libjpeg-dev libpng-dev
-      python3 python3-numpy python3-matplotlib python3-pytest clang-format snakemake)
+      python3 python3-numpy python3-matplotlib python3-pytest clang-format snakemake
+      python3-venv python3-setuptools)   # the analysis's venv and build backend
 
 missing=()
 for p in "${pkgs[@]}"; do

@@ -2,10 +2,15 @@
 # Set up GRFLOW from a clean clone: Debian packages, the LAMMPS 4Feb2025
 # source (Debian's source package, cached), LAMMPS with GRFLOW built in,
 # grflowplugin.so and the LAMMPS Python module, installed to /usr/local
-# (root) or ~/.local.  Then checks the installed lmp, plugin and module,
-# runs the paper's protocol with the quick preset on 2 MPI ranks
-# (runs/quick, about a minute) and makes the figures of analysis/ from it
-# (runs/quick/figures).  GRFLOW_SKIP_RUN=1 skips the run.
+# (root) or ~/.local; and the analysis (analysis/, the package
+# grflow_analysis) in a venv under that prefix (lib/grflow/python, made by
+# scripts/python-env.sh on the Python the CMake configure chose and
+# recorded as GRFLOW_ANALYSIS_PYTHON), with its commands grflow-figures
+# and grflow-curve linked into the prefix's bin.  Then checks the
+# installed lmp, plugin, module and commands, runs the paper's protocol
+# with the quick preset on 2 MPI ranks (runs/quick, about a minute) and
+# makes its figures with grflow-figures (runs/quick/figures).
+# GRFLOW_SKIP_RUN=1 skips the run.
 #
 #   scripts/setup.sh [extra cmake -D options]
 #   e.g. scripts/setup.sh -D LAMMPS_SOURCE_DIR=$HOME/lammps-4Feb2025
@@ -32,10 +37,22 @@ plugin=$prefix/lib/lammps/plugins/grflowplugin.so
 printf 'plugin load %s\nplugin list\n' "$plugin" | "$lmp" -log none -nocite 2>&1 \
   | grep "pair style plugin granular/grflow" > /dev/null || { echo "ERROR: cannot load $plugin"; exit 1; }
 echo "plugin: $plugin"
+# the Python of the analysis, chosen once: the configure's choice (its
+# cache), else the same rule (scripts/python-env.sh --which)
+python=$(sed -n 's/^GRFLOW_ANALYSIS_PYTHON:FILEPATH=//p' "$build/CMakeCache.txt")
+[ -n "$python" ] || python=$(scripts/python-env.sh --which)
 pydir=$(sed -n 's/^GRFLOW_PYTHON_INSTALL_DIR:STRING=//p' "$build/CMakeCache.txt")
-PYTHONPATH="$prefix/$pydir${PYTHONPATH:+:$PYTHONPATH}" /usr/bin/python3 -c \
+PYTHONPATH="$prefix/$pydir${PYTHONPATH:+:$PYTHONPATH}" "$python" -c \
   "import lammps; l = lammps.lammps(cmdargs=['-log', 'none', '-screen', 'none']); \
 assert l.has_style('pair', 'granular/grflow'); print('python module: lammps', l.version())"
+venv=$prefix/lib/grflow/python
+GRFLOW_ANALYSIS_PYTHON=$python scripts/python-env.sh "$venv"
+for cmd in grflow-figures grflow-curve; do
+  ln -sf "$venv/bin/$cmd" "$prefix/bin/$cmd"
+done
+"$prefix/bin/grflow-figures" --help > /dev/null || { echo "ERROR: grflow-figures does not run"; exit 1; }
+echo "analysis: $prefix/bin/grflow-figures, $prefix/bin/grflow-curve (Python $python," \
+  "grflow_analysis in $venv)"
 case "$prefix" in
   /usr/local) ;;
   *) echo "NOTE: add $prefix/bin to PATH and $prefix/$pydir to PYTHONPATH" ;;
@@ -53,4 +70,4 @@ mpirun --allow-run-as-root --oversubscribe -np "$np" "$lmp" -log none -screen no
   || { echo "ERROR: the protocol run failed; see runs/quick/log.*.lammps"; exit 1; }
 echo "protocol done in $(( $(date +%s) - start )) s"
 grep -h "^GRFLOW " runs/quick/log.prep.lammps runs/quick/log.shear.lammps || true
-/usr/bin/python3 analysis/make_figures.py runs/quick
+grflow-figures runs/quick
