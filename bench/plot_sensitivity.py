@@ -4,10 +4,13 @@
 """What moves the liquefaction exits' z_g and N_IL: the wall speed v_x, the
 shear stage's time step factor, the rolling/torsion arm, the
 preparation route and N (1000 against 2000), each changed alone, from
-the runs' figures/summary.json as analysis/make_figures.py wrote them
+the runs' figures/summary.json as grflow-figures wrote them
 (this script only draws; every number is the summary's).
 
-    /usr/bin/python3 bench/plot_sensitivity.py [--out PNG] [--runs DIR]
+    python3 bench/plot_sensitivity.py [--out PNG] [--runs DIR]
+
+with the Python of the set-up, which has matplotlib (scripts/python-env.sh:
+<prefix>/lib/grflow/python/bin/python, or build/python/bin/python).
 
 DIR (default runs/) holds the run directories of bench/vx_quick.sh (vx/),
 bench/timestep_study.sh (dtq10/, dtq10b/), bench/variants_quick.sh (arm/,

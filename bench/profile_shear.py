@@ -4,7 +4,7 @@ breakdown (Pair, Neigh, Comm, Output, Modify, Other) of every run segment
 of a log.shear.lammps (the deck splits the stage at every event), summed
 separately before and after initial liquefaction.
 
-    /usr/bin/python3 bench/profile_shear.py RUNDIR/log.shear.lammps [--whole]
+    python3 bench/profile_shear.py RUNDIR/log.shear.lammps [--whole]
 
 --whole: one sum over all segments (no split at initial liquefaction).
 

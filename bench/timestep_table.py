@@ -3,13 +3,17 @@
 (named s<seed>_f<dt_factor>) the preparation's e, z_g and p, N_IL, the
 liquefaction exits' z_g, the smallest and largest z_g after initial
 liquefaction, z_g at the inflections of z_g(N) at the exits (all from
-figures/summary.json, as analysis/make_figures.py wrote them), the
+figures/summary.json, as grflow-figures wrote them), the
 simulated time from initial liquefaction to the end of the series (at a
 fixed wall speed a measure of the strains of the post-liquefaction
 cycles; from series.txt), the shear stage's steps and the wall time;
 then, per dt_factor, the mean and the spread (min-max) over the seeds.
 
-    /usr/bin/python3 bench/timestep_table.py RUNDIR ...
+    python3 bench/timestep_table.py RUNDIR ...
+
+with the Python of the set-up, in which grflow_analysis is installed
+(scripts/python-env.sh: <prefix>/lib/grflow/python/bin/python, or
+build/python/bin/python).
 """
 import json
 import os
@@ -17,8 +21,7 @@ import re
 import sys
 from collections import defaultdict
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "analysis"))
-import grflow_analysis as ga  # noqa: E402
+import grflow_analysis as ga
 
 KEYS = [("e_prep", "e", "{:.4f}"), ("z_g_prep", "z_g0", "{:.3f}"), ("p_prep", "p0 (kPa)", "{:.1f}"),
         ("N_IL", "N_IL", "{:.2f}"), ("n_exits", "exits", "{:d}"),
@@ -35,7 +38,7 @@ def post_il_time(run, ru_liq):
         events = ga.run_events(run, series)
     except (OSError, ga.FormatError):
         return None
-    onset = ga.liquefaction(series, ru_liq, events)["onset"]
+    onset = ga.liquefaction(series, events, ru_liq)["onset"]
     return None if onset is None else float(series["time"][-1] - series["time"][onset])
 
 
