@@ -155,8 +155,13 @@ def main(argv=None):
         print(__doc__)
         return 2
     out, dirs = argv[0], argv[1:]
+    try:
+        runs = [run_result(d) for d in dirs]
+    except (OSError, ValueError, KeyError) as err:   # ga.FormatError is a ValueError
+        print("error: %s" % err, file=sys.stderr)
+        return 2
     os.makedirs(out, exist_ok=True)
-    c = campaign([run_result(d) for d in dirs])
+    c = campaign(runs)
     with open(os.path.join(out, "curve.json"), "w") as f:
         json.dump(c, f, indent=1)
     with open(os.path.join(out, "curve.md"), "w") as f:

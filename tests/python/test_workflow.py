@@ -70,6 +70,23 @@ def test_fit_needs_three_points_and_two_n():
     assert curve.fit_power_law([0.2, 0.3, 0.25], [5.0, 5.0, 5.0]) is None
 
 
+def test_curve_refuses_a_run_without_events(tmp_path):
+    """N_IL is fix grflow/shear's, from events.txt: grflow-curve stops with
+    exit status 2 and says so for a run directory without it, and writes
+    no curve."""
+    run = tmp_path / "seed1" / "csr0.2"
+    run.mkdir(parents=True)
+    (run / "run.json").write_text(json.dumps({"seed": 1, "csr": 0.2, "tau_amp": 2e4,
+                                              "p_target": 1e5, "max_cycles": 5}))
+    (run / "prep.json").write_text(json.dumps({"e": 0.65, "ru_liq": 0.99, "tau_amp": 2e4}))
+    (run / "series.txt").write_text("# step time reversals gamma tau p r_u z_g a_c\n"
+                                    "0 0 0 0 0 1e5 0 4.7 0\n100 1e-3 0 1e-4 5e3 1e5 0 4.7 0.1\n")
+    proc = subprocess.run(["grflow-curve", str(tmp_path / "out"), str(run)],
+                          capture_output=True, text=True, env=ENV, timeout=120)
+    assert proc.returncode == 2 and "no events.txt" in proc.stderr, proc.stderr
+    assert not (tmp_path / "out").exists()
+
+
 def planned(proc):
     """{rule: job count} from the "Job stats" table of a dry run."""
     jobs = {}
