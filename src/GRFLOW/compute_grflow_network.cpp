@@ -55,7 +55,8 @@ enum { INSIDE, NCONTACTS };
 /* ---------------------------------------------------------------------- */
 
 ComputeGRFLOWNetwork::ComputeGRFLOWNetwork(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), region(nullptr), inside(nullptr), ncontact(nullptr)
+    Compute(lmp, narg, arg), region(nullptr), invoked_stress(-1), inside(nullptr),
+    ncontact(nullptr)
 {
   nmax = 0;
   commflag = INSIDE;
@@ -73,6 +74,7 @@ ComputeGRFLOWNetwork::ComputeGRFLOWNetwork(LAMMPS *lmp, int narg, char **arg) :
   extvector = 0;
   vector = new double[size_vector];
   for (int k = 0; k < size_vector; k++) vector[k] = 0.0;
+  for (double &value : stress) value = 0.0;
 
   comm_forward = 1;
   comm_reverse = 1;
@@ -200,22 +202,67 @@ void ComputeGRFLOWNetwork::set_inside(double &volume)
 
 void ComputeGRFLOWNetwork::compute_vector()
 {
+  invoked_vector = update->ntimestep;
+  evaluate(true, vector);
+  // its stress entries are those compute_stress() would give
+  for (int k = 0; k < NSTRESS; k++) stress[k] = vector[k];
+  invoked_stress = update->ntimestep;
+}
+
+/* ---------------------------------------------------------------------- */
+
+const double *ComputeGRFLOWNetwork::compute_stress()
+{
+  invoked_stress = update->ntimestep;
+  evaluate(false, stress);
+  return stress;
+}
+
+/* ---------------------------------------------------------------------- */
+
+const double *ComputeGRFLOWNetwork::current_stress()
+{
+  if (invoked_stress == update->ntimestep) return stress;
+  return compute_stress();
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeGRFLOWNetwork::set_p0(double value)
+{
+  opt.p0 = value;
+  opt.p0flag = true;
+  // r_u as evaluate() would give it now (derive_stress())
+  stress[RU] = (value > 0.0) ? 1.0 - stress[PRESS] / value : 0.0;
+  if (invoked_vector == update->ntimestep)
+    vector[RU] = (value > 0.0) ? 1.0 - vector[PRESS] / value : 0.0;
+}
+
+/* ----------------------------------------------------------------------
+   the output vector (network) or its stress entries (NetworkLayout,
+   GRFLOW::derive_stress()), into out.  The stress sums are added in the
+   same order either way, and both pass the same ghost and inside[]
+   communication, so the stress path changes no result.
+------------------------------------------------------------------------- */
+
+void ComputeGRFLOWNetwork::evaluate(bool network, double *out)
+{
   // during a run or minimization init() has done the checks and found the
   // walls (fixes cannot come or go within a run); between runs (library
   // calls, variables) they are done here, as init() may not have been
   if (update->whichflag == 0) check_setup();
   require_current_contacts();
-  invoked_vector = update->ntimestep;
   grow_peratom();
 
   const double volume = refresh_ghosts_and_inside();
   // per processor: stress sums sum l (x) f (9), fabric sums sum n (x) n (9),
   // particles inside, floaters, contact ends, histogram of contact numbers
+  // (the stress path fills only the first 9)
   std::vector<double> local(GRFLOW::NetworkSums::size(opt.cmax), 0.0);
-  sum_pair_contacts(local.data());
-  sum_wall_contacts(local.data());
-  count_particles(local.data());
-  opt.reduce_and_derive(world, local, volume, vector);
+  sum_pair_contacts(local.data(), network);
+  sum_wall_contacts(local.data(), network);
+  if (network) count_particles(local.data());
+  opt.reduce_and_derive(world, local, volume, out, network);
 }
 
 /* ----------------------------------------------------------------------
@@ -288,13 +335,14 @@ double ComputeGRFLOWNetwork::refresh_ghosts_and_inside()
    from ghosts to owners with newton on)
 ------------------------------------------------------------------------- */
 
-void ComputeGRFLOWNetwork::sum_pair_contacts(double *sums)
+void ComputeGRFLOWNetwork::sum_pair_contacts(double *sums, bool network)
 {
   Pair *pair = force->pair;
   NeighList *list = pair->list;
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
-  for (int i = 0; i < nall; i++) ncontact[i] = 0.0;
+  if (network)
+    for (int i = 0; i < nall; i++) ncontact[i] = 0.0;
 
   double **x = atom->x;
   const double *radius = atom->radius;
@@ -331,14 +379,16 @@ void ComputeGRFLOWNetwork::sum_pair_contacts(double *sums)
       const double n[3] = {del[0] / r, del[1] / r, del[2] / r};
       const double f[3] = {fpair * del[0] + svector[0], fpair * del[1] + svector[1],
                            fpair * del[2] + svector[2]};
-      if (use_i) ncontact[i] += 1.0;
-      if (use_j) ncontact[j] += 1.0;
+      if (network) {
+        if (use_i) ncontact[i] += 1.0;
+        if (use_j) ncontact[j] += 1.0;
+      }
       GRFLOW::NetworkSums::add_pair_contact(sums, n, f, radsum - r, radius[i], radius[j], use_i,
-                                            use_j);
+                                            use_j, network);
     }
   }
 
-  if (newton_pair) {
+  if (network && newton_pair) {
     commflag = NCONTACTS;
     comm->reverse_comm(this);
   }
@@ -349,9 +399,9 @@ void ComputeGRFLOWNetwork::sum_pair_contacts(double *sums)
    ones its post_force() recorded on this step): n is the wall normal
 ------------------------------------------------------------------------- */
 
-void ComputeGRFLOWNetwork::sum_wall_contacts(double *sums)
+void ComputeGRFLOWNetwork::sum_wall_contacts(double *sums, bool network)
 {
-  GRFLOW::add_wall_contacts(walls, inside, atom->nlocal, ncontact, sums);
+  GRFLOW::add_wall_contacts(walls, inside, atom->nlocal, network ? ncontact : nullptr, sums);
 }
 
 /* ----------------------------------------------------------------------

@@ -46,12 +46,19 @@ class ComputeGRFLOWNetwork : public Compute, public GRFLOW::NetworkLayout {
   void unpack_reverse_comm(int, int *, double *) override;
   double memory_usage() override;
 
-  // reference pressure for r_u, for fixes that capture it (e.g. when shear starts)
-  void set_p0(double value)
-  {
-    opt.p0 = value;
-    opt.p0flag = true;
-  }
+  // the entries SXX..RU (the first NSTRESS of the vector) of this step,
+  // for fixes that need no more (the reversal check of fix grflow/shear,
+  // the servo of fix grflow/compress): the stress sums alone, without the
+  // contact counts, fabric and P_c of the network quantities.
+  // compute_stress() evaluates them; current_stress() reuses those of this
+  // step (or of compute_vector() on this step) if there are any.  The same
+  // to the bit as the vector's entries.
+  const double *compute_stress();
+  const double *current_stress();
+
+  // reference pressure for r_u, for fixes that capture it (e.g. when
+  // shear starts); r_u of this step's results follows it
+  void set_p0(double value);
   // true if the command gave the p0 keyword (then a fix must not set p0:
   // each p0 has one owner)
   bool has_p0_keyword() const { return opt.p0_keyword; }
@@ -61,6 +68,9 @@ class ComputeGRFLOWNetwork : public Compute, public GRFLOW::NetworkLayout {
   class Region *region;
 
   std::vector<class FixGRFLOWWall *> walls;
+
+  double stress[NSTRESS];    // compute_stress()'s entries, of step invoked_stress
+  bigint invoked_stress;
 
   int nmax;
   double *inside;      // 1 if the atom is in the group and the sub-volume
@@ -73,9 +83,12 @@ class ComputeGRFLOWNetwork : public Compute, public GRFLOW::NetworkLayout {
   void require_current_contacts();
   void grow_peratom();
   double refresh_ghosts_and_inside();
-  // the sums of compute_vector() (GRFLOW::NetworkSums), per processor
-  void sum_pair_contacts(double *sums);
-  void sum_wall_contacts(double *sums);
+  // the vector (network true) or the stress entries, into out
+  void evaluate(bool network, double *out);
+  // the sums of evaluate() (GRFLOW::NetworkSums), per processor; with
+  // network false the stress sums only
+  void sum_pair_contacts(double *sums, bool network);
+  void sum_wall_contacts(double *sums, bool network);
   void count_particles(double *sums);
 };
 

@@ -180,8 +180,8 @@ void FixGRFLOWCompress::schedule_energy(bigint step)
 
 void FixGRFLOWCompress::measure()
 {
-  if (network->invoked_vector != update->ntimestep) network->compute_vector();
-  servo.set_stresses(settings, network->vector);
+  // the stress sums alone (the servo needs no network quantity)
+  servo.set_stresses(settings, network->current_stress());
 
   // kinetic energy, translational and rotational, of the fix group
   double kelocal = GRFLOW::kinetic_sum(atom->nlocal, atom->mask, groupbit, atom->v, atom->omega,

@@ -98,15 +98,15 @@ void FixGRFLOWShear::init()
 void FixGRFLOWShear::setup(int /*vflag*/)
 {
   const bool first = !state.started;
+  // the stresses of this step, evaluated afresh (atoms may have been
+  // changed between runs since the compute's last evaluation on this step)
+  const double *stress = network->compute_stress();
   if (first) {
-    network->compute_vector();
     GRFLOW::FixHost host{lmp};
-    state.start(network->vector[ComputeGRFLOWNetwork::PRESS], sim_time(), host);
+    state.start(stress[ComputeGRFLOWNetwork::PRESS], sim_time(), host);
   }
-  // r_u at this step with this p0 (the compute may have been invoked with
-  // another p0 of its own, its p0 keyword, just above or earlier)
+  // r_u at this step with this p0
   network->set_p0(state.p0);
-  network->compute_vector();
   drive_wall();
   progress.start(platform::walltime(), update->ntimestep);
   // read tau, p, r_u for output; apply the reversal and liquefaction rules
@@ -152,10 +152,12 @@ void FixGRFLOWShear::end_of_step()
 
 void FixGRFLOWShear::check(bool decide)
 {
-  if (network->invoked_vector != update->ntimestep) network->compute_vector();
-  state.tau = network->vector[ComputeGRFLOWNetwork::TAU];
-  state.press = network->vector[ComputeGRFLOWNetwork::PRESS];
-  state.ru = network->vector[ComputeGRFLOWNetwork::RU];
+  // the stress sums alone: the network quantities are evaluated only on
+  // the steps that output them
+  const double *stress = network->current_stress();
+  state.tau = stress[ComputeGRFLOWNetwork::TAU];
+  state.press = stress[ComputeGRFLOWNetwork::PRESS];
+  state.ru = stress[ComputeGRFLOWNetwork::RU];
   if (!decide) return;
   const bigint step = update->ntimestep;
   if (state.reverse(settings, step, sim_time())) {

@@ -129,10 +129,12 @@ namespace GRFLOW {
     }
 
     // the output vector from this processor's sums: the sums over all
-    // processors of world, then derive_network() (below); with p0 first,
-    // the first positive pressure becomes p0 (r_u = 1 - p/p0 needs p0 > 0)
+    // processors of world, then derive_network() (below), or with network
+    // false derive_stress(), its first NSTRESS entries only; with p0
+    // first, the first positive pressure becomes p0 (r_u = 1 - p/p0 needs
+    // p0 > 0)
     void reduce_and_derive(MPI_Comm world, const std::vector<double> &local, double volume,
-                           double *vector);
+                           double *vector, bool network = true);
 
     // the bounds of the slab of the sample between zlo and zhi
     void slab_bounds(double zlo_value, double zhi_value, double &lo, double &hi) const
@@ -147,12 +149,14 @@ namespace GRFLOW {
   // positions of the entries of the compute's output vector (0-based):
   // stress, p, tau, q, |s|, r_u, particles, floaters, contacts, z_g, z
   // with floaters, a_c, sign, fabric anisotropy tensor, volume, then
-  // P_c for c = 0..cmax
+  // P_c for c = 0..cmax.  The first NSTRESS entries (SXX..RU) come from
+  // the stress sums alone: the stress path (derive_stress()) gives them
+  // without the network quantities.
   struct NetworkLayout {
     // clang-format off
     enum {
       SXX, SYY, SZZ, SXY, SXZ, SYZ, PRESS, TAU, QDEV, SNORM, RU, NP, NFLOAT, NCONTACT, ZG,
-      ZPLAIN, AC, SC, AXX, AYY, AZZ, AXY, AXZ, AYZ, VOLUME, PC0
+      ZPLAIN, AC, SC, AXX, AYY, AZZ, AXY, AXZ, AYZ, VOLUME, PC0, NSTRESS = NP
     };
     // clang-format on
     static int size(int cmax) { return PC0 + cmax + 1; }
@@ -175,16 +179,37 @@ namespace GRFLOW {
         }
     }
 
-    // a particle-particle contact with overlap delta between particles of
-    // radii radi, radj, counted at the ends use_i, use_j (the ends inside
-    // that this processor counts, see count_ends())
-    static void add_pair_contact(double *sums, const double *n, const double *f, double delta,
-                                 double radi, double radj, bool use_i, bool use_j)
+    // the stress part of add_contact() alone (the same additions, so the
+    // stress sums are the same to the bit with or without the fabric)
+    static void add_contact_stress(double *sums, const double *n, const double *f, double arm)
     {
-      // the contact law's arms a - delta/2 (the kernel's contact_arm)
+      for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 3; b++) sums[STRESS + 3 * a + b] += arm * n[a] * f[b];
+    }
+
+    // the sum of the contact law's arms a - delta/2 (the kernel's
+    // contact_arm) of the ends use_i, use_j of a contact with overlap delta
+    static double pair_arm(double delta, double radi, double radj, bool use_i, bool use_j)
+    {
       double arm = 0.0;
       if (use_i) arm += contact_arm(radi, delta);
       if (use_j) arm += contact_arm(radj, delta);
+      return arm;
+    }
+
+    // a particle-particle contact with overlap delta between particles of
+    // radii radi, radj, counted at the ends use_i, use_j (the ends inside
+    // that this processor counts, see count_ends()); with network false
+    // its stress only
+    static void add_pair_contact(double *sums, const double *n, const double *f, double delta,
+                                 double radi, double radj, bool use_i, bool use_j,
+                                 bool network = true)
+    {
+      const double arm = pair_arm(delta, radi, radj, use_i, use_j);
+      if (!network) {
+        add_contact_stress(sums, n, f, arm);
+        return;
+      }
       const double ends = (use_i ? 1.0 : 0.0) + (use_j ? 1.0 : 0.0);
       add_contact(sums, n, f, arm, ends);
     }
@@ -203,8 +228,12 @@ namespace GRFLOW {
     // +1 below, -1 above): arm a - delta/2, force fw on the particle
     static void add_wall_contact(double *sums, double nz, const double *fw, double arm)
     {
-      for (int b = 0; b < 3; b++) sums[STRESS + 3 * 2 + b] += arm * nz * fw[b];
+      add_wall_stress(sums, nz, fw, arm);
       sums[FABRIC + 3 * 2 + 2] += 1.0;
+    }
+    static void add_wall_stress(double *sums, double nz, const double *fw, double arm)
+    {
+      for (int b = 0; b < 3; b++) sums[STRESS + 3 * 2 + b] += arm * nz * fw[b];
     }
 
     // a particle inside with c force-bearing contacts
@@ -258,7 +287,8 @@ namespace GRFLOW {
 
   // the contacts of owned particles inside with the flat walls of fix
   // grflow/wall (the force-bearing ones the wall recorded on this step; n
-  // is the wall's normal), counted in ncontact[]
+  // is the wall's normal), counted in ncontact[]; with ncontact null
+  // their stress only (the stress path)
   template <class Walls>
   static void add_wall_contacts(const Walls &walls, const double *inside, int nlocal,
                                 double *ncontact, double *sums)
@@ -269,8 +299,14 @@ namespace GRFLOW {
         for (int w = 0; w < FlatWalls::NWALL; w++) {
           const double arm = wall->contact_arm(i, w);
           if (arm <= 0.0) continue;
-          ncontact[i] += 1.0;
-          NetworkSums::add_wall_contact(sums, wall->normal_sign(w), wall->contact_force(i, w), arm);
+          if (ncontact) {
+            ncontact[i] += 1.0;
+            NetworkSums::add_wall_contact(sums, wall->normal_sign(w), wall->contact_force(i, w),
+                                          arm);
+          } else {
+            NetworkSums::add_wall_stress(sums, wall->normal_sign(w), wall->contact_force(i, w),
+                                         arm);
+          }
         }
       }
   }
@@ -286,21 +322,35 @@ namespace GRFLOW {
   /* ----------------------------------------------------------------------
      the output vector (NetworkLayout) from the sums over all processors
      and the volume of the sub-volume; tau = -(s_ab + s_ba)/2 of the axes
-     tau_a, tau_b; r_u = 1 - p/p0 if p0 > 0, else 0
+     tau_a, tau_b; r_u = 1 - p/p0 if p0 > 0, else 0.  derive_stress()
+     gives the first NSTRESS entries from the stress sums alone,
+     derive_network() all of them; the entries both give are the same to
+     the bit.
   ------------------------------------------------------------------------- */
 
-  static inline void derive_network(const double *total, double volume, int tau_a, int tau_b,
-                                    int cmax, double p0, double *vector)
+  // the stress sigma_ab = sum l_a f_b / V of the sums, its mean p and its
+  // symmetric deviatoric part sym; returns sym:sym
+  static inline double network_stress(const double *total, double volume, double s[3][3],
+                                      double &p, double sym[3][3])
   {
-    typedef NetworkSums S;
-    typedef NetworkLayout L;
-    double s[3][3], sym[3][3], fabric[3][3];
+    for (int a = 0; a < 3; a++)
+      for (int b = 0; b < 3; b++) s[a][b] = total[NetworkSums::STRESS + 3 * a + b] / volume;
+    p = (s[0][0] + s[1][1] + s[2][2]) / 3.0;
+    double ss = 0.0;
     for (int a = 0; a < 3; a++)
       for (int b = 0; b < 3; b++) {
-        s[a][b] = total[S::STRESS + 3 * a + b] / volume;
-        fabric[a][b] = total[S::FABRIC + 3 * a + b];
+        sym[a][b] = 0.5 * (s[a][b] + s[b][a]) - (a == b ? p : 0.0);    // deviatoric
+        ss += sym[a][b] * sym[a][b];
       }
-    const double np = total[S::NP], nfloat = total[S::FLOAT], csum = total[S::ENDS];
+    return ss;
+  }
+
+  static inline void derive_stress(const double *total, double volume, int tau_a, int tau_b,
+                                   double p0, double *vector)
+  {
+    typedef NetworkLayout L;
+    double s[3][3], sym[3][3], p;
+    const double ss = network_stress(total, volume, s, p, sym);
 
     // stress: LAMMPS order and convention (compression positive,
     // sigma_ab = sum l_a f_b / V); derived values use the symmetric part
@@ -311,18 +361,24 @@ namespace GRFLOW {
     vector[L::SXY] = s[0][1];
     vector[L::SXZ] = s[0][2];
     vector[L::SYZ] = s[1][2];
-    const double p = (s[0][0] + s[1][1] + s[2][2]) / 3.0;
-    double ss = 0.0;
-    for (int a = 0; a < 3; a++)
-      for (int b = 0; b < 3; b++) {
-        sym[a][b] = 0.5 * (s[a][b] + s[b][a]) - (a == b ? p : 0.0);    // deviatoric
-        ss += sym[a][b] * sym[a][b];
-      }
     vector[L::PRESS] = p;
     vector[L::TAU] = -0.5 * (s[tau_a][tau_b] + s[tau_b][tau_a]);
     vector[L::QDEV] = sqrt(1.5 * ss);
     vector[L::SNORM] = sqrt(ss);
     vector[L::RU] = (p0 > 0.0) ? 1.0 - p / p0 : 0.0;
+  }
+
+  static inline void derive_network(const double *total, double volume, int tau_a, int tau_b,
+                                    int cmax, double p0, double *vector)
+  {
+    typedef NetworkSums S;
+    typedef NetworkLayout L;
+    derive_stress(total, volume, tau_a, tau_b, p0, vector);
+    double s[3][3], sym[3][3], p, fabric[3][3];
+    const double ss = network_stress(total, volume, s, p, sym);
+    for (int a = 0; a < 3; a++)
+      for (int b = 0; b < 3; b++) fabric[a][b] = total[S::FABRIC + 3 * a + b];
+    const double np = total[S::NP], nfloat = total[S::FLOAT], csum = total[S::ENDS];
 
     // contacts
 
@@ -359,12 +415,19 @@ namespace GRFLOW {
     for (int c = 0; c <= cmax; c++) vector[L::PC0 + c] = (np > 0.0) ? total[S::HIST + c] / np : 0.0;
   }
 
+  // the sums of all processors, then derive_network() or, with network
+  // false, derive_stress() (vector then needs NSTRESS entries only).  Both
+  // add up the whole array (the stress path's has zeros beyond the
+  // stress), so that the stress sums are added in the same order.
   inline void NetworkOptions::reduce_and_derive(MPI_Comm world, const std::vector<double> &local,
-                                                double volume, double *vector)
+                                                double volume, double *vector, bool network)
   {
     std::vector<double> total(local.size());
     MPI_Allreduce(local.data(), total.data(), (int) local.size(), MPI_DOUBLE, MPI_SUM, world);
-    derive_network(total.data(), volume, tau_a, tau_b, cmax, p0flag ? p0 : 0.0, vector);
+    if (network)
+      derive_network(total.data(), volume, tau_a, tau_b, cmax, p0flag ? p0 : 0.0, vector);
+    else
+      derive_stress(total.data(), volume, tau_a, tau_b, p0flag ? p0 : 0.0, vector);
     if (p0first && !p0flag && vector[NetworkLayout::PRESS] > 0.0) {
       p0 = vector[NetworkLayout::PRESS];
       p0flag = true;
