@@ -7,10 +7,9 @@ preparation route and N (1000 against 2000), each changed alone, from
 the runs' figures/summary.json as grflow-figures wrote them
 (this script only draws; every number is the summary's).
 
-    python3 bench/plot_sensitivity.py [--out PNG] [--runs DIR]
+    grflow-python bench/plot_sensitivity.py [--out PNG] [--runs DIR]
 
-with the Python of the set-up, which has matplotlib (scripts/python-env.sh:
-<prefix>/lib/grflow/python/bin/python, or build/python/bin/python).
+(grflow-python: the set-up's Python, which has matplotlib.)
 
 DIR (default runs/) holds the run directories of bench/vx_quick.sh (vx/),
 bench/timestep_study.sh (dtq10/, dtq10b/), bench/variants_quick.sh (arm/,

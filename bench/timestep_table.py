@@ -9,11 +9,10 @@ fixed wall speed a measure of the strains of the post-liquefaction
 cycles; from series.txt), the shear stage's steps and the wall time;
 then, per dt_factor, the mean and the spread (min-max) over the seeds.
 
-    python3 bench/timestep_table.py RUNDIR ...
+    grflow-python bench/timestep_table.py RUNDIR ...
 
-with the Python of the set-up, in which grflow_analysis is installed
-(scripts/python-env.sh: <prefix>/lib/grflow/python/bin/python, or
-build/python/bin/python).
+(grflow-python: the set-up's Python, in which grflow_analysis is
+installed; build/python/bin/python is the tests' one.)
 """
 import json
 import os

@@ -6,7 +6,8 @@
 # grflow_analysis) in a venv under that prefix (lib/grflow/python, made by
 # scripts/python-env.sh on the Python the CMake configure chose and
 # recorded as GRFLOW_ANALYSIS_PYTHON), with its commands grflow-figures
-# and grflow-curve linked into the prefix's bin.  Then checks the
+# and grflow-curve linked into the prefix's bin, and grflow-python, that
+# venv's Python.  Then checks the
 # installed lmp, plugin, module and commands, runs the paper's protocol
 # with the quick preset on 2 MPI ranks (runs/quick, about a minute) and
 # makes its figures with grflow-figures (runs/quick/figures).
@@ -50,8 +51,14 @@ GRFLOW_ANALYSIS_PYTHON=$python scripts/python-env.sh "$venv"
 for cmd in grflow-figures grflow-curve; do
   ln -sf "$venv/bin/$cmd" "$prefix/bin/$cmd"
 done
+# that Python, for scripts that import grflow_analysis (bench/*.py): a
+# wrapper, since a link to a venv's python is not in the venv
+printf '#!/bin/sh\nexec "%s" "$@"\n' "$venv/bin/python" > "$prefix/bin/grflow-python"
+chmod 755 "$prefix/bin/grflow-python"
 "$prefix/bin/grflow-figures" --help > /dev/null || { echo "ERROR: grflow-figures does not run"; exit 1; }
-echo "analysis: $prefix/bin/grflow-figures, $prefix/bin/grflow-curve (Python $python," \
+(cd / && "$prefix/bin/grflow-python" -c "import grflow_analysis") \
+  || { echo "ERROR: grflow-python does not import grflow_analysis"; exit 1; }
+echo "analysis: $prefix/bin/grflow-figures, grflow-curve, grflow-python (Python $python," \
   "grflow_analysis in $venv)"
 case "$prefix" in
   /usr/local) ;;
