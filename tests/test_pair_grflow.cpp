@@ -548,17 +548,17 @@ TEST_F(Packings, SingleSeesPairFromEitherSide)
   EXPECT_LT(measured("single(j,i) vs single(i,j)", worst), 1.0e-13);
 }
 
-// stock pair granular, set as in shared/notes/contact-law.md
-void compare_with_stock(const std::string &data, bool torsion, double reff)
+// stock pair granular, set as in shared/notes/contact-law.md; unclipped:
+// granular/grflow normal_force unclipped against stock without limit_damping
+void compare_with_stock(const std::string &data, bool torsion, double reff, bool unclipped = false)
 {
   char twist[256] = "";
   if (torsion)
     snprintf(twist, sizeof(twist), " twisting sds %.17g %.17g %.17g", 1.0e5 * reff * reff,
              0.0575 * reff * reff, 0.1 * reff);
-  const std::string stock =
-      std::string("pair_coeff * * hooke 1.0e6 1.15 damping velocity limit_damping "
-                  "tangential linear_history 8.0e5 0.2 0.5 rolling sds 1.0e5 0.0575 0.1") +
-      twist;
+  const std::string stock = std::string("pair_coeff * * hooke 1.0e6 1.15 damping velocity ") +
+      (unclipped ? "" : "limit_damping ") +
+      "tangential linear_history 8.0e5 0.2 0.5 rolling sds 1.0e5 0.0575 0.1" + twist;
   const std::string ours =
       std::string("pair_coeff * * 1.0e6 1.15") + (torsion ? "" : " torsion off");
 
@@ -573,7 +573,9 @@ void compare_with_stock(const std::string &data, bool torsion, double reff)
       l->cmds({"units si", "atom_style sphere", "atom_modify map array sort 0 0.0",
                "comm_modify vel yes", "read_data " + data + " nocoeff", "neighbor 1.0e-3 bin",
                "neigh_modify delay 0 every 100000 check no", "timestep 1.0e-7"});
-    a.cmds({"pair_style granular/grflow velocity_arm full", ours});
+    a.cmds({std::string("pair_style granular/grflow velocity_arm full") +
+                (unclipped ? " normal_force unclipped" : ""),
+            ours});
     b.cmds({"pair_style granular", stock});
     for (Lammps *l : {&a, &b})
       l->cmds({"fix nve all nve/sphere",
@@ -581,8 +583,8 @@ void compare_with_stock(const std::string &data, bool torsion, double reff)
     a.cmd("run " + std::to_string(nsteps));
     b.cmd("run " + std::to_string(nsteps));
     const double tol = nsteps == 0 ? 1.0e-12 : 1.0e-8;
-    const std::string tag =
-        std::string(torsion ? "mono" : "poly") + " vs stock after " + std::to_string(nsteps) + " ";
+    const std::string tag = std::string(torsion ? "mono" : "poly") +
+        (unclipped ? " unclipped" : "") + " vs stock after " + std::to_string(nsteps) + " ";
     for (const char *name : {"f", "torque", "omega", "x"})
       EXPECT_LT(measured(tag + name, max_rel_diff(a.gather3(name), b.gather3(name))), tol);
   }
@@ -596,6 +598,190 @@ TEST_F(Packings, MatchesStockPolydisperseNoTorsion)
 TEST_F(Packings, MatchesStockMonodisperseWithTorsion)
 {
   compare_with_stock(mono, true, 0.25 * 1.5e-3);    // a' = R/2 for equal spheres
+}
+
+// ---------------------------------------------------------------------------
+// normal_force unclipped: f_n = kn delta - cn v_n without the clip at zero
+// ---------------------------------------------------------------------------
+
+TEST_F(Packings, UnclippedMatchesStockWithoutLimitDamping)
+{
+  compare_with_stock(poly, false, 0.0, true);
+  compare_with_stock(mono, true, 0.25 * 1.5e-3, true);
+}
+
+// the laws differ on this drive (some contacts pass through tension), so
+// the comparisons above can tell them apart
+TEST_F(Packings, UnclippedDiffersFromClipped)
+{
+  std::vector<double> w[2];
+  for (int law = 0; law < 2; law++) {
+    Lammps lmp;
+    read(lmp, poly);
+    lmp.cmds({std::string("pair_style granular/grflow") + (law ? " normal_force unclipped" : ""),
+              "pair_coeff * * 1.0e6 1.15"});
+    drive(lmp);
+    lmp.cmd("run 2000");
+    w[law] = lmp.gather3("omega");
+  }
+  EXPECT_GT(measured("poly omega unclipped vs clipped after 2000", max_rel_diff(w[1], w[0])),
+            1.0e-6);
+}
+
+// the law of a pair style, as it tells fix grflow/wall
+int normal_law_of(Lammps &lmp)
+{
+  auto *pair = static_cast<LAMMPS_NS::LAMMPS *>(lmp.handle)->force->pair;
+  int dim = -1;
+  const int *law = pair ? static_cast<const int *>(pair->extract("normal_force", dim)) : nullptr;
+  EXPECT_EQ(dim, 0);
+  return law ? *law : -1;
+}
+
+/* ----------------------------------------------------------------------
+   Head-on collision of two equal spheres through LAMMPS (fix nve/sphere):
+   the restitution coefficient against the closed forms of
+   test_contact_kernel.cpp (unclipped: exp(-pi zeta/sqrt(1 - zeta^2));
+   clipped: exp(-eta t_f), t_f the zero of the force) and against stock
+   pair granular hooke without and with limit_damping.  The smallest
+   spheres of the sample (d = 1 mm): the most damped pair, zeta = 0.69.
+------------------------------------------------------------------------- */
+
+double collide_in_lammps(const std::vector<std::string> &pair, double dt, int nsteps,
+                         std::vector<double> *v_out = nullptr)
+{
+  const double d = 1.0e-3, v0 = 0.1;
+  Lammps lmp;
+  lmp.cmds({"units si", "atom_style sphere", "atom_modify map array", "boundary f f f",
+            "comm_modify vel yes", "region box block -0.005 0.005 -0.005 0.005 -0.005 0.005",
+            "create_box 1 box", "neighbor 0.5e-3 bin", "neigh_modify delay 0 every 1 check yes",
+            "create_atoms 1 single 0 0 0 units box",
+            "create_atoms 1 single " + fmt_double(1.0001 * d) + " 0 0 units box",
+            "set type 1 diameter " + fmt_double(d) + " density 2650",
+            "set atom 1 vx " + fmt_double(0.5 * v0), "set atom 2 vx " + fmt_double(-0.5 * v0)});
+  lmp.cmds(pair);
+  lmp.cmds(
+      {"timestep " + fmt_double(dt), "fix nve all nve/sphere", "run " + std::to_string(nsteps)});
+  const auto v = lmp.gather3("v");
+  if (v_out) *v_out = v;
+  return (v[3] - v[0]) / v0;    // sphere 1 at x = 0 came in along +x: v_2 - v_1 = e v0
+}
+
+TEST(PairGRFLOW, HeadOnRestitutionBothLaws)
+{
+  const double d = 1.0e-3, kn = 1.0e6, cn = 1.15;
+  const double m = 2650.0 * PI * d * d * d / 6.0, meff = 0.5 * m;
+  const double w0 = sqrt(kn / meff), eta = cn / (2.0 * meff);
+  const double w = sqrt(w0 * w0 - eta * eta), zeta = eta / w0;
+  const double e_unclipped = exp(-PI * zeta / sqrt(1.0 - zeta * zeta));
+  const double t_f = (PI - atan2(2.0 * eta * w, w * w - eta * eta)) / w;
+  const double e_clipped = exp(-eta * t_f);
+  // 20000 steps per contact: the first-order error of velocity Verlet with
+  // a velocity-dependent force is below 3e-4 of e here (kernel test); the
+  // spheres start 0.1 um apart and are well apart after 3 t_c
+  const double t_c = PI / w, dt = t_c / 20000;
+  const int nsteps = 60000;
+  const double tol = 1.0e-3;
+  const std::string coeff = "pair_coeff * * 1.0e6 1.15";
+  const std::string stock = "pair_coeff * * hooke 1.0e6 1.15 damping velocity ";
+  const std::string stock_t = "tangential linear_history 8.0e5 0.2 0.5";
+  std::vector<double> v_ours_u, v_ours_c, v_stock_u, v_stock_c;
+  const double eu = collide_in_lammps({"pair_style granular/grflow normal_force unclipped", coeff},
+                                      dt, nsteps, &v_ours_u);
+  const double ec = collide_in_lammps({"pair_style granular/grflow", coeff}, dt, nsteps, &v_ours_c);
+  const double su =
+      collide_in_lammps({"pair_style granular", stock + stock_t}, dt, nsteps, &v_stock_u);
+  const double sc = collide_in_lammps({"pair_style granular", stock + "limit_damping " + stock_t},
+                                      dt, nsteps, &v_stock_c);
+  printf("[ measured ] d = 1 mm, zeta %.4f: e unclipped closed form %.5f, granular/grflow %.5f, "
+         "stock %.5f; clipped closed form %.5f, granular/grflow %.5f, stock limit_damping %.5f\n",
+         zeta, e_unclipped, eu, su, e_clipped, ec, sc);
+  EXPECT_NEAR(eu, e_unclipped, tol * e_unclipped);
+  EXPECT_NEAR(ec, e_clipped, tol * e_clipped);
+  // the two laws are told apart by far more than the tolerance
+  EXPECT_GT(ec - eu, 100.0 * tol * e_unclipped);
+  // stock: the same law, to round-off (its forces are summed in another order)
+  EXPECT_LT(measured("head-on unclipped vs stock", max_rel_diff(v_ours_u, v_stock_u)), 1.0e-10);
+  EXPECT_LT(measured("head-on clipped vs stock limit_damping", max_rel_diff(v_ours_c, v_stock_c)),
+            1.0e-10);
+}
+
+// the law survives write_restart / read_restart; a file's settings word is
+// the one int it was before the keyword (0 or 1, velocity_arm) for the
+// clipped law, so files written before read as clipped; a word with
+// unknown bits is refused
+TEST_F(Packings, RestartKeepsNormalForce)
+{
+  const std::string file = workfile("grflow_unclipped.restart");
+  std::vector<double> want_w;
+  for (int law = 0; law < 2; law++) {
+    SCOPED_TRACE(law ? "unclipped" : "clipped");
+    {
+      Lammps lmp;
+      read(lmp, poly);
+      lmp.cmds({std::string("pair_style granular/grflow") + (law ? " normal_force unclipped" : ""),
+                "pair_coeff * * 1.0e6 1.15"});
+      drive(lmp);
+      lmp.cmds({"run 500", "write_restart " + file, "run 500"});
+      want_w = lmp.gather3("omega");
+    }
+    Lammps lmp;
+    lmp.cmds({"read_restart " + file, "comm_modify vel yes", "neighbor 0.2e-3 bin",
+              "neigh_modify delay 0 every 1 check yes"});
+    EXPECT_EQ(normal_law_of(lmp), law ? NORMAL_UNCLIPPED : NORMAL_CLIPPED);
+    drive(lmp);
+    lmp.cmd("run 500");
+    EXPECT_LT(measured(std::string("restart omega, ") + (law ? "unclipped" : "clipped"),
+                       max_rel_diff(lmp.gather3("omega"), want_w)),
+              1.0e-11);
+
+    // the settings word follows the pair style's name in the file
+    std::ifstream in(file, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string name("granular/grflow", 16);    // with its terminating zero
+    const size_t at = bytes.find(name);
+    ASSERT_NE(at, std::string::npos);
+    int word = -1;
+    memcpy(&word, &bytes[at + name.size()], sizeof(int));
+    EXPECT_EQ(word, law ? 2 : 0);
+    if (law == 1) {
+      // velocity_arm full with the clipped law, as a file of before the keyword
+      word = 1;
+      memcpy(&bytes[at + name.size()], &word, sizeof(int));
+      const std::string old = workfile("grflow_oldsettings.restart");
+      std::ofstream(old, std::ios::binary) << bytes;
+      Lammps o;
+      o.cmd("read_restart " + old);
+      EXPECT_EQ(normal_law_of(o), NORMAL_CLIPPED);
+      // unknown bits: an error, not another law
+      word = 4;
+      memcpy(&bytes[at + name.size()], &word, sizeof(int));
+      std::ofstream(old, std::ios::binary | std::ios::trunc) << bytes;
+      const std::string msg = first_error({"read_restart " + old});
+      EXPECT_NE(msg.find("unknown settings 4 in the restart file"), std::string::npos) << msg;
+    }
+  }
+}
+
+// granular/grflow/omp takes the keyword from the serial style: the same
+// trajectory on one thread
+TEST_F(Packings, UnclippedOmpMatchesSerial)
+{
+  if (!lammps_config_has_package("OPENMP")) GTEST_SKIP() << "no OPENMP package in this LAMMPS";
+  std::vector<double> w[2];
+  for (int omp = 0; omp < 2; omp++) {
+    Lammps lmp;
+    if (omp) lmp.cmd("package omp 1");    // before the box
+    read(lmp, poly);
+    lmp.cmds({std::string("pair_style granular/grflow") + (omp ? "/omp" : "") +
+                  " normal_force unclipped",
+              "pair_coeff * * 1.0e6 1.15"});
+    EXPECT_EQ(normal_law_of(lmp), NORMAL_UNCLIPPED);
+    drive(lmp);
+    lmp.cmd("run 1000");
+    w[omp] = lmp.gather3("omega");
+  }
+  EXPECT_EQ(max_rel_diff(w[1], w[0]), 0.0);
 }
 
 // ---------------------------------------------------------------------------
@@ -644,6 +830,13 @@ TEST(PairGRFLOWErrors, BadPairStyle)
       << msg;
   msg = error_after(box, "pair_style granular/grflow velocity_arm");
   EXPECT_NE(msg.find("velocity_arm"), std::string::npos) << msg;
+  msg = error_after(box, "pair_style granular/grflow normal_force none");
+  EXPECT_NE(msg.find("Unknown pair_style granular/grflow normal_force value none: expected "
+                     "clipped or unclipped"),
+            std::string::npos)
+      << msg;
+  msg = error_after(box, "pair_style granular/grflow velocity_arm full normal_force");
+  EXPECT_NE(msg.find("pair_style granular/grflow normal_force"), std::string::npos) << msg;
 }
 
 TEST(PairGRFLOWErrors, NeedsSpheresAndGhostVelocities)

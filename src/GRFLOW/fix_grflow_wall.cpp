@@ -38,9 +38,11 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "force.h"
 #include "memory.h"
 #include "modify.h"
 #include "neighbor.h"
+#include "pair.h"
 #include "update.h"
 
 #include <cstring>
@@ -117,6 +119,17 @@ void FixGRFLOWWall::init()
 
   // minimize calls no fix's post_force(), only min_post_force()
   if (update->whichflag == 2) host.warning(minimize_message(id));
+
+  // the walls' normal force law is their own (as fix wall/gran's model is),
+  // but another one than the particles' is more likely a slip than meant
+  if (Pair *pair = force->pair_match("^granular/grflow", 0)) {
+    int dim = -1;
+    const int *law = static_cast<const int *>(pair->extract("normal_force", dim));
+    if (law && dim == 0 && *law != normal_law())
+      host.warning(fmt::format("Fix grflow/wall {}: the walls' normal_force {} is not the pair "
+                               "style's normal_force {}",
+                               id, normal_law_name(normal_law()), normal_law_name(*law)));
+  }
 }
 
 /* ---------------------------------------------------------------------- */

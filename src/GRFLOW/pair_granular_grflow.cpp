@@ -26,6 +26,7 @@
 
 #include "grflow_coeffs.h"
 #include "grflow_contact.h"
+#include "grflow_restart.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -48,6 +49,12 @@ using namespace GRFLOW;
 
 static constexpr int SVECTOR_SIZE = 11;
 
+// the settings in restart files: one int, bit 0 full_arm (velocity_arm
+// full), bit 1 the unclipped normal force.  Files written before the
+// normal_force keyword hold full_arm alone (0 or 1): the clipped law, as
+// then; a clipped run writes the same int as before.
+static constexpr int SETTINGS_FULL_ARM = 1, SETTINGS_UNCLIPPED = 2;
+
 /* ---------------------------------------------------------------------- */
 
 PairGranularGRFLOW::PairGranularGRFLOW(LAMMPS *lmp) : Pair(lmp)
@@ -65,6 +72,7 @@ PairGranularGRFLOW::PairGranularGRFLOW(LAMMPS *lmp) : Pair(lmp)
 
   dt = update->dt;
   full_arm = 0;
+  normal_law = NORMAL_CLIPPED;
   for (auto &p : param) p = nullptr;
   packed = nullptr;
   onerad_dynamic = maxrad_dynamic = nullptr;
@@ -141,17 +149,25 @@ void PairGranularGRFLOW::allocate()
 
 /* ----------------------------------------------------------------------
    global settings: pair_style granular/grflow [velocity_arm reduced|full]
+                                               [normal_force clipped|unclipped]
 ------------------------------------------------------------------------- */
 
 void PairGranularGRFLOW::settings(int narg, char **arg)
 {
   full_arm = 0;
+  normal_law = NORMAL_CLIPPED;
   int iarg = 0;
   while (iarg < narg) {
     if (strcmp(arg[iarg], "velocity_arm") == 0) {
       if (iarg + 2 > narg)
         utils::missing_cmd_args(FLERR, "pair_style granular/grflow velocity_arm", error);
       full_arm = GRFLOW::parse_velocity_arm(lmp, "pair_style granular/grflow", arg[iarg + 1]);
+      iarg += 2;
+    } else if (strcmp(arg[iarg], "normal_force") == 0) {
+      if (iarg + 2 > narg)
+        utils::missing_cmd_args(FLERR, "pair_style granular/grflow normal_force", error);
+      FixHost host{lmp};
+      normal_law = read_normal_force("pair_style granular/grflow", arg[iarg + 1], host);
       iarg += 2;
     } else {
       error->all(FLERR, "Unknown pair_style granular/grflow keyword: {}", arg[iarg]);
@@ -302,6 +318,7 @@ double PairGranularGRFLOW::init_one(int i, int j)
   check_coeffs(lmp, fmt::format("Pair granular/grflow coefficients of types {} {}", i, j), value);
   ContactCoeffs &c = packed[i][j];
   pack_coeffs(value, c);
+  c.normal_law = normal_law;
   packed[j][i] = c;
 
   // contact range: sum of the largest radii of the two types
@@ -349,15 +366,25 @@ void PairGranularGRFLOW::read_restart(FILE *fp)
 
 void PairGranularGRFLOW::write_restart_settings(FILE *fp)
 {
-  fwrite(&full_arm, sizeof(int), 1, fp);
+  int word = full_arm ? SETTINGS_FULL_ARM : 0;
+  if (normal_law == NORMAL_UNCLIPPED) word |= SETTINGS_UNCLIPPED;
+  fwrite(&word, sizeof(int), 1, fp);
 }
 
 /* ---------------------------------------------------------------------- */
 
 void PairGranularGRFLOW::read_restart_settings(FILE *fp)
 {
-  if (comm->me == 0) utils::sfread(FLERR, &full_arm, sizeof(int), 1, fp, nullptr, error);
-  MPI_Bcast(&full_arm, 1, MPI_INT, 0, world);
+  int word = 0;
+  if (comm->me == 0) utils::sfread(FLERR, &word, sizeof(int), 1, fp, nullptr, error);
+  MPI_Bcast(&word, 1, MPI_INT, 0, world);
+  if (word & ~(SETTINGS_FULL_ARM | SETTINGS_UNCLIPPED))
+    error->all(FLERR,
+               "Pair granular/grflow: unknown settings {} in the restart file (written by a newer "
+               "version of GRFLOW?)",
+               word);
+  full_arm = (word & SETTINGS_FULL_ARM) ? 1 : 0;
+  normal_law = (word & SETTINGS_UNCLIPPED) ? NORMAL_UNCLIPPED : NORMAL_CLIPPED;
 }
 
 /* ----------------------------------------------------------------------
@@ -505,11 +532,16 @@ void PairGranularGRFLOW::find_history(int i, int j, double *hist)
 }
 
 /* ----------------------------------------------------------------------
-   per type pair coefficient arrays, for fix adapt
+   per type pair coefficient arrays, for fix adapt; the normal force law
 ------------------------------------------------------------------------- */
 
 void *PairGranularGRFLOW::extract(const char *str, int &dim)
 {
+  // the normal force law (NORMAL_CLIPPED or NORMAL_UNCLIPPED), for fix grflow/wall
+  if (strcmp(str, "normal_force") == 0) {
+    dim = 0;
+    return (void *) &normal_law;
+  }
   dim = 2;
   for (int k = 0; k < NCOEFF; k++)
     if (strcmp(str, COEFF_NAMES[k]) == 0) return (void *) param[k];

@@ -54,7 +54,8 @@ class PairGranularGRFLOW : public Pair {
 
  protected:
   double dt;
-  int full_arm;    // 1: contact-point velocity with full radii (stock compatible)
+  int full_arm;      // 1: contact-point velocity with full radii (stock compatible)
+  int normal_law;    // GRFLOW::NORMAL_CLIPPED or NORMAL_UNCLIPPED (keyword normal_force)
 
   // user-facing per type pair coefficients, one array per name in COEFF_NAMES,
   // (changed by pair_coeff or fix adapt) and their packed copy for the kernel

@@ -78,7 +78,8 @@ namespace GRFLOW {
 
     // per atom: the kernel's history (HIST_SIZE values) per wall, and the
     // contact record per wall: the arm (a - delta/2) of a force-bearing
-    // contact, -1 for a touching one without force or one not known (the
+    // contact (f_n > 0), -1 for a touching one without force (or, with the
+    // unclipped law, in tension: f_n <= 0) or one not known (the
     // atom came from another rank or a restart file), 0 for none; then
     // the force on the atom (3)
     enum { NHIST = NWALL * HIST_SIZE };
@@ -122,6 +123,9 @@ namespace GRFLOW {
       walls[w].v[2] = vz;
     }
 
+    // the normal force law of the walls (normal_force keyword)
+    int normal_law() const { return coeff.normal_law; }
+
     // contact of atom i with wall w on this step: arm (a - delta/2; <= 0 if
     // no force-bearing contact) and force on the atom (set only where the
     // arm is > 0); for compute grflow/network
@@ -140,7 +144,8 @@ namespace GRFLOW {
     /* --------------------------------------------------------------------
        the fix command's arguments after "fix ID group grflow/wall":
        kn cn [coefficient keywords] then zlo z, zhi z, velocity_arm
-       reduced|full in any order.  Returns the index after the last one.
+       reduced|full, normal_force clipped|unclipped in any order.  Returns
+       the index after the last one.
     ------------------------------------------------------------------------- */
 
     template <class Host> int read_args(int narg, char **arg, int first, Host &host)
@@ -167,10 +172,18 @@ namespace GRFLOW {
           }
           full_arm = read_velocity_arm(cmd, arg[iarg + 1], host);
           iarg += 2;
+        } else if (kw == "normal_force") {
+          if (iarg + 2 > narg) {
+            host.missing(cmd + " normal_force");
+            return narg;
+          }
+          coeff.normal_law = read_normal_force(cmd, arg[iarg + 1], host);
+          iarg += 2;
         } else {
           if (coeff_index(kw) < NCOEFF || kw == "rolling" || kw == "torsion")
             host.fail("Fix grflow/wall contact keyword " + kw +
-                      " must come right after kn cn, before zlo, zhi and velocity_arm");
+                      " must come right after kn cn, before zlo, zhi, velocity_arm and "
+                      "normal_force");
           else
             host.fail("Unknown " + cmd + " keyword: " + kw);
           return narg;
@@ -606,7 +619,7 @@ namespace GRFLOW {
     }
 
    protected:
-    ContactCoeffs coeff;
+    ContactCoeffs coeff;           // with the normal force law (normal_force keyword)
     double coeff_value[NCOEFF];    // as parsed, changed by fix_modify
     int full_arm;
     double dt;
