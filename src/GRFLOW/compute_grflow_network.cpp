@@ -33,6 +33,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix_grflow_shear.h"
 #include "fix_grflow_wall.h"
 #include "force.h"
 #include "input.h"
@@ -55,8 +56,8 @@ enum { INSIDE, NCONTACTS };
 /* ---------------------------------------------------------------------- */
 
 ComputeGRFLOWNetwork::ComputeGRFLOWNetwork(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), region(nullptr), invoked_stress(-1), inside(nullptr),
-    ncontact(nullptr)
+    Compute(lmp, narg, arg), region(nullptr), p0_owner(nullptr), invoked_stress(-1),
+    inside(nullptr), ncontact(nullptr)
 {
   nmax = 0;
   commflag = INSIDE;
@@ -133,6 +134,12 @@ void ComputeGRFLOWNetwork::check_setup()
                  "of GRFLOW (plugin and built-in styles mixed)",
                  ifix->id);
     walls.push_back(wfix);
+  }
+  // the owner of p0 (none with the p0 keyword: fix grflow/shear refuses it)
+  p0_owner = nullptr;
+  for (auto *ifix : modify->get_fix_by_style("^grflow/shear$")) {
+    auto *shear = dynamic_cast<FixGRFLOWShear *>(ifix);
+    if (shear && shear->network_id() == id) p0_owner = shear;
   }
 
   for (const std::string &str : {opt.zlo, opt.zhi, opt.volume}) {
@@ -213,6 +220,10 @@ void ComputeGRFLOWNetwork::compute_vector()
 
 const double *ComputeGRFLOWNetwork::compute_stress()
 {
+  // a vector of this step evaluated before may no longer be current
+  // (atoms changed between runs, p0 taken since): whoever reads it next
+  // evaluates it again
+  if (invoked_vector == update->ntimestep) invoked_vector = -1;
   invoked_stress = update->ntimestep;
   evaluate(false, stress);
   return stress;
@@ -224,18 +235,6 @@ const double *ComputeGRFLOWNetwork::current_stress()
 {
   if (invoked_stress == update->ntimestep) return stress;
   return compute_stress();
-}
-
-/* ---------------------------------------------------------------------- */
-
-void ComputeGRFLOWNetwork::set_p0(double value)
-{
-  opt.p0 = value;
-  opt.p0flag = true;
-  // r_u as evaluate() would give it now (derive_stress())
-  stress[RU] = (value > 0.0) ? 1.0 - stress[PRESS] / value : 0.0;
-  if (invoked_vector == update->ntimestep)
-    vector[RU] = (value > 0.0) ? 1.0 - vector[PRESS] / value : 0.0;
 }
 
 /* ----------------------------------------------------------------------
@@ -262,7 +261,7 @@ void ComputeGRFLOWNetwork::evaluate(bool network, double *out)
   sum_pair_contacts(local.data(), network);
   sum_wall_contacts(local.data(), network);
   if (network) count_particles(local.data());
-  opt.reduce_and_derive(world, local, volume, out, network);
+  opt.reduce_and_derive(world, local, volume, out, network, p0_owner ? p0_owner->p0() : 0.0);
 }
 
 /* ----------------------------------------------------------------------

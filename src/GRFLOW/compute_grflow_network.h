@@ -56,11 +56,10 @@ class ComputeGRFLOWNetwork : public Compute, public GRFLOW::NetworkLayout {
   const double *compute_stress();
   const double *current_stress();
 
-  // reference pressure for r_u, for fixes that capture it (e.g. when
-  // shear starts); r_u of this step's results follows it
-  void set_p0(double value);
-  // true if the command gave the p0 keyword (then a fix must not set p0:
-  // each p0 has one owner)
+  // true if the command gave the p0 keyword (then no fix may own p0: a
+  // fix grflow/shear refuses the compute; each p0 has one owner).  Without
+  // it, p0 of r_u is that of the fix grflow/shear that names this compute
+  // (GRFLOW::NetworkOptions::reference_p0()).
   bool has_p0_keyword() const { return opt.p0_keyword; }
 
  private:
@@ -68,6 +67,7 @@ class ComputeGRFLOWNetwork : public Compute, public GRFLOW::NetworkLayout {
   class Region *region;
 
   std::vector<class FixGRFLOWWall *> walls;
+  class FixGRFLOWShear *p0_owner;    // the fix grflow/shear of this compute, if any
 
   double stress[NSTRESS];    // compute_stress()'s entries, of step invoked_stress
   bigint invoked_stress;

@@ -180,8 +180,12 @@ void FixGRFLOWCompress::schedule_energy(bigint step)
 
 void FixGRFLOWCompress::measure()
 {
-  // the stress sums alone (the servo needs no network quantity)
-  servo.set_stresses(settings, network->current_stress());
+  // the whole vector, not the stress path (current_stress()): the servo
+  // step then leaves the compute's vector current, and a library call or
+  // variable reading it after the run gets the stresses the servo used,
+  // not ones evaluated anew after the box was scaled
+  if (network->invoked_vector != update->ntimestep) network->compute_vector();
+  servo.set_stresses(settings, network->vector);
 
   // kinetic energy, translational and rotational, of the fix group
   double kelocal = GRFLOW::kinetic_sum(atom->nlocal, atom->mask, groupbit, atom->v, atom->omega,
@@ -201,7 +205,7 @@ void FixGRFLOWCompress::measure()
 
 void FixGRFLOWCompress::drive_walls()
 {
-  const double vz = servo.wall_speed(height());
+  const double vz = servo.wall_speed(GRFLOW::wall_gap(*wall));
   wall->set_velocity(FixGRFLOWWall::LO, 0.0, 0.0, -vz);
   wall->set_velocity(FixGRFLOWWall::HI, 0.0, 0.0, vz);
 }
@@ -223,13 +227,6 @@ void FixGRFLOWCompress::deform_box()
 
 /* ---------------------------------------------------------------------- */
 
-double FixGRFLOWCompress::height() const
-{
-  return wall->wall(FixGRFLOWWall::HI).z - wall->wall(FixGRFLOWWall::LO).z;
-}
-
-/* ---------------------------------------------------------------------- */
-
 void FixGRFLOWCompress::reset_dt()
 {
   dt = update->dt;
@@ -239,7 +236,8 @@ void FixGRFLOWCompress::reset_dt()
 
 double FixGRFLOWCompress::compute_vector(int n)
 {
-  return servo.output(n, settings, wall ? height() : 0.0, domain->xprd, domain->yprd, vsolid);
+  const double h = wall ? GRFLOW::wall_gap(*wall) : 0.0;
+  return servo.output(n, settings, h, domain->xprd, domain->yprd, vsolid);
 }
 
 /* ---------------------------------------------------------------------- */

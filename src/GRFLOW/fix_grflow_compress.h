@@ -57,7 +57,6 @@ class FixGRFLOWCompress : public Fix, public GRFLOW::CompressLayout {
   void schedule_energy(bigint step);
   void drive_walls();
   void deform_box();
-  double height() const;
 };
 
 }    // namespace LAMMPS_NS

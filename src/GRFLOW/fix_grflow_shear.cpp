@@ -35,6 +35,7 @@
 #include "error.h"
 #include "fix_grflow_wall.h"
 #include "group.h"
+#include "modify.h"
 #include "platform.h"
 #include "update.h"
 
@@ -85,6 +86,11 @@ void FixGRFLOWShear::init()
   wall = FixGRFLOWWall::find_cell(lmp, "Fix grflow/shear", settings.wall_id.c_str());
   network = ComputeGRFLOWNetwork::find(lmp, "Fix grflow/shear", settings.network_id.c_str());
   if (network->has_p0_keyword()) error->all(FLERR, settings.p0_owner(id));
+  for (auto *ifix : modify->get_fix_by_style("^grflow/shear$")) {
+    auto *other = dynamic_cast<FixGRFLOWShear *>(ifix);
+    if (other && other != this && other->network_id() == settings.network_id)
+      error->all(FLERR, settings.p0_second_owner(id, other->id));
+  }
   // group delete guards only a fix's own group
   if (iglue >= 0 && group->find(settings.glue) != iglue) error->all(FLERR, settings.glue_deleted());
   dt = update->dt;
@@ -99,14 +105,14 @@ void FixGRFLOWShear::setup(int /*vflag*/)
 {
   const bool first = !state.started;
   // the stresses of this step, evaluated afresh (atoms may have been
-  // changed between runs since the compute's last evaluation on this step)
+  // changed between runs since the compute's last evaluation on this
+  // step); the compute's r_u is that of this fix's p0 (p0())
   const double *stress = network->compute_stress();
   if (first) {
     GRFLOW::FixHost host{lmp};
     state.start(stress[ComputeGRFLOWNetwork::PRESS], sim_time(), host);
+    network->compute_stress();    // r_u with the p0 just taken
   }
-  // r_u at this step with this p0
-  network->set_p0(state.p0);
   drive_wall();
   progress.start(platform::walltime(), update->ntimestep);
   // read tau, p, r_u for output; apply the reversal and liquefaction rules
@@ -124,8 +130,7 @@ void FixGRFLOWShear::drive_wall()
   wall->set_velocity(FixGRFLOWWall::HI, vw, 0.0, 0.0);
   // the glued layer takes the wall velocity at once, so that between steps
   // (output, the setup of a next run) it moves with the wall as well
-  if (iglue >= 0)
-    GRFLOW::glue_velocity(atom->nlocal, atom->mask, gluebit, vw, atom->v, atom->omega);
+  if (iglue >= 0) GRFLOW::glue_layer(atom->nlocal, atom->mask, gluebit, vw, atom->v, atom->omega);
 }
 
 /* ----------------------------------------------------------------------
@@ -134,8 +139,8 @@ void FixGRFLOWShear::drive_wall()
 
 void FixGRFLOWShear::initial_integrate(int /*vflag*/)
 {
-  GRFLOW::glue_move(atom->nlocal, atom->mask, gluebit, state.velocity(settings), dt, atom->x,
-                    atom->v, atom->omega);
+  GRFLOW::glue_layer(atom->nlocal, atom->mask, gluebit, state.velocity(settings), atom->v,
+                     atom->omega, dt, atom->x);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -163,19 +168,12 @@ void FixGRFLOWShear::check(bool decide)
   if (state.reverse(settings, step, sim_time())) {
     drive_wall();
     if (settings.progress) {
-      const double gamma = wall->wall(FixGRFLOWWall::HI).disp[0] / height();
+      const double gamma = wall->wall(FixGRFLOWWall::HI).disp[0] / GRFLOW::wall_gap(*wall);
       const std::string line = progress.line(id, state, step, gamma, platform::walltime());
       if (comm->me == 0) utils::logmesg(lmp, line);
     }
   }
   state.liquefied(settings, step, sim_time());
-}
-
-/* ---------------------------------------------------------------------- */
-
-double FixGRFLOWShear::height() const
-{
-  return wall->wall(FixGRFLOWWall::HI).z - wall->wall(FixGRFLOWWall::LO).z;
 }
 
 /* ----------------------------------------------------------------------
@@ -199,7 +197,8 @@ void FixGRFLOWShear::reset_dt()
 double FixGRFLOWShear::compute_vector(int n)
 {
   const double xw = wall ? wall->wall(FixGRFLOWWall::HI).disp[0] : 0.0;
-  return state.output(n, settings, update->ntimestep, wall != nullptr, xw, wall ? height() : 0.0);
+  const double h = wall ? GRFLOW::wall_gap(*wall) : 0.0;
+  return state.output(n, settings, update->ntimestep, wall != nullptr, xw, h);
 }
 
 /* ---------------------------------------------------------------------- */

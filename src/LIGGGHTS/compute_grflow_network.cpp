@@ -22,6 +22,7 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix_grflow_shear.h"
 #include "fix_grflow_wall.h"
 #include "force.h"
 #include "input.h"
@@ -56,8 +57,8 @@ template <class... T> std::string message(const T &...piece)
 /* ---------------------------------------------------------------------- */
 
 ComputeGRFLOWNetwork::ComputeGRFLOWNetwork(LAMMPS *lmp, int &iarg, int narg, char **arg) :
-    Compute(lmp, iarg, narg, arg), region(NULL), nmax(0), inside(NULL), ncontact(NULL),
-    commflag(INSIDE)
+    Compute(lmp, iarg, narg, arg), region(NULL), p0_owner(NULL), invoked_stress(-1), nmax(0),
+    inside(NULL), ncontact(NULL), commflag(INSIDE)
 {
   GRFLOW::FixHost host = {lmp};
   opt.parse(narg, arg, iarg, host);
@@ -72,6 +73,7 @@ ComputeGRFLOWNetwork::ComputeGRFLOWNetwork(LAMMPS *lmp, int &iarg, int narg, cha
   extvector = 0;
   vector = new double[size_vector];
   for (int k = 0; k < size_vector; k++) vector[k] = 0.0;
+  for (int k = 0; k < NSTRESS; k++) stress[k] = 0.0;
 
   comm_forward = 1;
   comm_reverse = 1;
@@ -124,6 +126,13 @@ void ComputeGRFLOWNetwork::check_setup()
     if (strcmp(modify->fix[i]->style, "grflow/wall") != 0) continue;
     FixGRFLOWWall *wfix = dynamic_cast<FixGRFLOWWall *>(modify->fix[i]);
     if (wfix) walls.push_back(wfix);
+  }
+  // the owner of p0 (none with the p0 keyword: fix grflow/shear refuses it)
+  p0_owner = NULL;
+  for (int i = 0; i < modify->nfix; i++) {
+    if (strcmp(modify->fix[i]->style, "grflow/shear") != 0) continue;
+    FixGRFLOWShear *shear = dynamic_cast<FixGRFLOWShear *>(modify->fix[i]);
+    if (shear && shear->network_id() == id) p0_owner = shear;
   }
 
   const std::string *values[] = {&opt.zlo, &opt.zhi, &opt.volume};
@@ -211,17 +220,50 @@ void ComputeGRFLOWNetwork::set_inside(double &volume)
 
 void ComputeGRFLOWNetwork::compute_vector()
 {
+  invoked_vector = update->ntimestep;
+  evaluate(true, vector);
+  for (int k = 0; k < NSTRESS; k++) stress[k] = vector[k];
+  invoked_stress = update->ntimestep;
+}
+
+/* ---------------------------------------------------------------------- */
+
+const double *ComputeGRFLOWNetwork::compute_stress()
+{
+  // a vector of this step evaluated before may no longer be current
+  // (atoms changed between runs, p0 taken since): whoever reads it next
+  // evaluates it again
+  if (invoked_vector == update->ntimestep) invoked_vector = -1;
+  invoked_stress = update->ntimestep;
+  evaluate(false, stress);
+  return stress;
+}
+
+/* ---------------------------------------------------------------------- */
+
+const double *ComputeGRFLOWNetwork::current_stress()
+{
+  if (invoked_stress == update->ntimestep) return stress;
+  return compute_stress();
+}
+
+/* ----------------------------------------------------------------------
+   the output vector (network) or its stress entries, into out: the
+   stress sums are added in the same order either way (as in LAMMPS)
+------------------------------------------------------------------------- */
+
+void ComputeGRFLOWNetwork::evaluate(bool network, double *out)
+{
   if (update->whichflag == 0) check_setup();
   require_current_contacts();
-  invoked_vector = update->ntimestep;
   grow_peratom();
 
   const double volume = refresh_ghosts_and_inside();
   std::vector<double> local(GRFLOW::NetworkSums::size(opt.cmax), 0.0);
-  sum_pair_contacts(local.data());
-  sum_wall_contacts(local.data());
-  count_particles(local.data());
-  opt.reduce_and_derive(world, local, volume, vector);
+  sum_pair_contacts(local.data(), network);
+  sum_wall_contacts(local.data(), network);
+  if (network) count_particles(local.data());
+  opt.reduce_and_derive(world, local, volume, out, network, p0_owner ? p0_owner->p0() : 0.0);
 }
 
 /* ----------------------------------------------------------------------
@@ -283,7 +325,7 @@ double ComputeGRFLOWNetwork::refresh_ghosts_and_inside()
    contribute to the sums (GRFLOW::NetworkSums), ncontact[] counts them
 ------------------------------------------------------------------------- */
 
-void ComputeGRFLOWNetwork::sum_pair_contacts(double *sums)
+void ComputeGRFLOWNetwork::sum_pair_contacts(double *sums, bool network)
 {
   using namespace GRFLOW;
   const LiggghtsPairLaw &law = liggghts_pair_laws()[lmp];
@@ -293,7 +335,8 @@ void ComputeGRFLOWNetwork::sum_pair_contacts(double *sums)
   const int dnum = pair->dnum();
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
-  for (int i = 0; i < nall; i++) ncontact[i] = 0.0;
+  if (network)
+    for (int i = 0; i < nall; i++) ncontact[i] = 0.0;
 
   double **x = atom->x, **v = atom->v, **omega = atom->omega;
   const double *radius = atom->radius;
@@ -327,13 +370,16 @@ void ComputeGRFLOWNetwork::sum_pair_contacts(double *sums)
                      omega[j], update->dt, false, hist, out);
       if (out.fn <= 0.0) continue;    // touching but carrying no normal force
 
-      if (use_i) ncontact[i] += 1.0;
-      if (use_j) ncontact[j] += 1.0;
-      NetworkSums::add_pair_contact(sums, g.n, out.f, g.delta, radius[i], radius[j], use_i, use_j);
+      if (network) {
+        if (use_i) ncontact[i] += 1.0;
+        if (use_j) ncontact[j] += 1.0;
+      }
+      NetworkSums::add_pair_contact(sums, g.n, out.f, g.delta, radius[i], radius[j], use_i, use_j,
+                                    network);
     }
   }
 
-  if (newton_pair) {
+  if (network && newton_pair) {
     commflag = NCONTACTS;
     comm->reverse_comm_compute(this);
   }
@@ -344,9 +390,9 @@ void ComputeGRFLOWNetwork::sum_pair_contacts(double *sums)
    ones its post_force() recorded on this step): n is the wall normal
 ------------------------------------------------------------------------- */
 
-void ComputeGRFLOWNetwork::sum_wall_contacts(double *sums)
+void ComputeGRFLOWNetwork::sum_wall_contacts(double *sums, bool network)
 {
-  GRFLOW::add_wall_contacts(walls, inside, atom->nlocal, ncontact, sums);
+  GRFLOW::add_wall_contacts(walls, inside, atom->nlocal, network ? ncontact : NULL, sums);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -44,14 +44,17 @@ class ComputeGRFLOWNetwork : public Compute, public GRFLOW::NetworkLayout {
   void unpack_reverse_comm(int, int *, double *);
   double memory_usage();
 
-  // reference pressure for r_u, for fixes that capture it (e.g. when shear starts)
-  void set_p0(double value)
-  {
-    opt.p0 = value;
-    opt.p0flag = true;
-  }
-  // true if the command gave the p0 keyword (then a fix must not set p0:
-  // each p0 has one owner)
+  // the entries SXX..RU (the first NSTRESS of the vector) of this step,
+  // for fixes that need no more (the reversal check of fix grflow/shear,
+  // the servo of fix grflow/compress): the stress sums alone, as in LAMMPS
+  // (compute_stress() evaluates them, current_stress() reuses those of
+  // this step)
+  const double *compute_stress();
+  const double *current_stress();
+
+  // true if the command gave the p0 keyword (then no fix may own p0: a
+  // fix grflow/shear refuses the compute; each p0 has one owner).  Without
+  // it, p0 of r_u is that of the fix grflow/shear that names this compute.
   bool has_p0_keyword() const { return opt.p0_keyword; }
 
  private:
@@ -59,6 +62,10 @@ class ComputeGRFLOWNetwork : public Compute, public GRFLOW::NetworkLayout {
   class Region *region;
 
   std::vector<class FixGRFLOWWall *> walls;
+  class FixGRFLOWShear *p0_owner;    // the fix grflow/shear of this compute, if any
+
+  double stress[NSTRESS];    // compute_stress()'s entries, of step invoked_stress
+  bigint invoked_stress;
 
   int nmax;
   double *inside;      // 1 if the atom is in the group and the sub-volume
@@ -71,8 +78,9 @@ class ComputeGRFLOWNetwork : public Compute, public GRFLOW::NetworkLayout {
   void require_current_contacts();
   void grow_peratom();
   double refresh_ghosts_and_inside();
-  void sum_pair_contacts(double *sums);
-  void sum_wall_contacts(double *sums);
+  void evaluate(bool network, double *out);
+  void sum_pair_contacts(double *sums, bool network);
+  void sum_wall_contacts(double *sums, bool network);
   void count_particles(double *sums);
 };
 

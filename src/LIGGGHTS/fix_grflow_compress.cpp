@@ -150,6 +150,10 @@ void FixGRFLOWCompress::tally_energy_on(bigint step)
 // stresses, kinetic and elastic energy
 void FixGRFLOWCompress::read_state()
 {
+  // the whole vector, not the stress path (current_stress()): the servo
+  // step then leaves the compute's vector current, and a library call or
+  // variable reading it after the run gets the stresses the servo used,
+  // not ones evaluated anew after the box was scaled
   if (network->invoked_vector != update->ntimestep) network->compute_vector();
   servo.set_stresses(settings, network->vector);
   double sum = GRFLOW::kinetic_sum(atom->nlocal, atom->mask, groupbit, atom->v, atom->omega,
@@ -166,7 +170,7 @@ void FixGRFLOWCompress::read_state()
 
 void FixGRFLOWCompress::move_walls()
 {
-  const double speed = servo.wall_speed(gap());
+  const double speed = servo.wall_speed(GRFLOW::wall_gap(*wall));
   wall->set_velocity(FixGRFLOWWall::HI, 0.0, 0.0, speed);
   wall->set_velocity(FixGRFLOWWall::LO, 0.0, 0.0, -speed);
 }
@@ -188,11 +192,6 @@ void FixGRFLOWCompress::scale_box()
     if (mask[i] & groupbit) domain->lamda2x(x[i], x[i]);
 }
 
-double FixGRFLOWCompress::gap() const
-{
-  return wall->wall(FixGRFLOWWall::HI).z - wall->wall(FixGRFLOWWall::LO).z;
-}
-
 void FixGRFLOWCompress::reset_dt()
 {
   dt = update->dt;
@@ -200,7 +199,7 @@ void FixGRFLOWCompress::reset_dt()
 
 double FixGRFLOWCompress::compute_vector(int n)
 {
-  const double h = wall ? gap() : 0.0;
+  const double h = wall ? GRFLOW::wall_gap(*wall) : 0.0;
   return servo.output(n, settings, h, domain->xprd, domain->yprd, vsolid);
 }
 

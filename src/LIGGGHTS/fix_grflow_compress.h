@@ -61,7 +61,6 @@ class FixGRFLOWCompress : public Fix, public GRFLOW::CompressLayout {
   void tally_energy_on(bigint step);
   void move_walls();
   void scale_box();
-  double gap() const;
 };
 
 }    // namespace LAMMPS_NS

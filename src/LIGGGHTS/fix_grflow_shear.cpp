@@ -20,6 +20,7 @@
 #include "compute_grflow_network.h"
 #include "fix_grflow_wall.h"
 #include "group.h"
+#include "modify.h"
 #include "update.h"
 
 #include <mpi.h>
@@ -62,6 +63,11 @@ void FixGRFLOWShear::init()
   network = ComputeGRFLOWNetwork::find(lmp, "Fix grflow/shear", settings.network_id.c_str());
   FixHost host = {lmp};
   if (network->has_p0_keyword()) host.fail(settings.p0_owner(id));
+  for (int i = 0; i < modify->nfix; i++) {
+    FixGRFLOWShear *other = dynamic_cast<FixGRFLOWShear *>(modify->fix[i]);
+    if (other && other != this && other->network_id() == settings.network_id)
+      host.fail(settings.p0_second_owner(id, other->id));
+  }
   if (iglue >= 0 && group->find(settings.glue.c_str()) != iglue) host.fail(settings.glue_deleted());
   dt = update->dt;
 }
@@ -71,13 +77,14 @@ void FixGRFLOWShear::init()
 void FixGRFLOWShear::setup(int)
 {
   const bool first = !state.started;
+  // this step's stresses afresh (atoms may have changed between runs);
+  // the compute's r_u is that of this fix's p0 (p0())
+  const double *stress = network->compute_stress();
   if (first) {
-    network->compute_vector();
     FixHost host = {lmp};
-    state.start(network->vector[ComputeGRFLOWNetwork::PRESS], update->get_cur_time(), host);
+    state.start(stress[ComputeGRFLOWNetwork::PRESS], update->get_cur_time(), host);
+    network->compute_stress();    // r_u with the p0 just taken
   }
-  network->set_p0(state.p0);
-  network->compute_vector();
   move_wall();
   progress.start(MPI_Wtime(), update->ntimestep);
   read_network(settings.decides(first, update->ntimestep));
@@ -88,13 +95,13 @@ void FixGRFLOWShear::move_wall()
   const double vw = state.velocity(settings);
   wall->set_velocity(FixGRFLOWWall::HI, vw, 0.0, 0.0);
   if (iglue < 0) return;
-  GRFLOW::glue_velocity(atom->nlocal, atom->mask, gluebit, vw, atom->v, atom->omega);
+  GRFLOW::glue_layer(atom->nlocal, atom->mask, gluebit, vw, atom->v, atom->omega);
 }
 
 void FixGRFLOWShear::initial_integrate(int)
 {
   const double vw = state.velocity(settings);
-  GRFLOW::glue_move(atom->nlocal, atom->mask, gluebit, vw, dt, atom->x, atom->v, atom->omega);
+  GRFLOW::glue_layer(atom->nlocal, atom->mask, gluebit, vw, atom->v, atom->omega, dt, atom->x);
 }
 
 void FixGRFLOWShear::end_of_step()
@@ -107,24 +114,20 @@ void FixGRFLOWShear::end_of_step()
 void FixGRFLOWShear::read_network(bool decide)
 {
   const bigint now = update->ntimestep;
-  if (network->invoked_vector != now) network->compute_vector();
-  const double *vec = network->vector;
-  state.tau = vec[ComputeGRFLOWNetwork::TAU];
-  state.press = vec[ComputeGRFLOWNetwork::PRESS];
-  state.ru = vec[ComputeGRFLOWNetwork::RU];
+  // the stress sums alone: the network quantities only where output
+  const double *stress = network->current_stress();
+  state.tau = stress[ComputeGRFLOWNetwork::TAU];
+  state.press = stress[ComputeGRFLOWNetwork::PRESS];
+  state.ru = stress[ComputeGRFLOWNetwork::RU];
   if (!decide) return;
   if (state.reverse(settings, now, update->get_cur_time())) {
     move_wall();
     const double xw = wall->wall(FixGRFLOWWall::HI).disp[0];
     if (settings.progress)
-      GRFLOW::log_text(lmp, progress.line(id, state, now, xw / wall_height(), MPI_Wtime()));
+      GRFLOW::log_text(lmp,
+                       progress.line(id, state, now, xw / GRFLOW::wall_gap(*wall), MPI_Wtime()));
   }
   state.liquefied(settings, now, update->get_cur_time());
-}
-
-double FixGRFLOWShear::wall_height() const
-{
-  return wall->wall(FixGRFLOWWall::HI).z - wall->wall(FixGRFLOWWall::LO).z;
 }
 
 void FixGRFLOWShear::reset_dt()
@@ -136,7 +139,7 @@ double FixGRFLOWShear::compute_vector(int n)
 {
   if (!wall) return state.output(n, settings, update->ntimestep, false, 0.0, 0.0);
   const double xw = wall->wall(FixGRFLOWWall::HI).disp[0];
-  return state.output(n, settings, update->ntimestep, true, xw, wall_height());
+  return state.output(n, settings, update->ntimestep, true, xw, GRFLOW::wall_gap(*wall));
 }
 
 // the values of grflow_shear_rule.h and the simulated time

@@ -41,6 +41,11 @@ class FixGRFLOWShear : public Fix, public GRFLOW::ShearLayout {
   void write_restart(FILE *) override;
   void restart(char *) override;
 
+  // the compute grflow/network this fix reads, and p0 of its r_u: this fix
+  // owns p0 (0 until shearing starts); the compute reads it
+  const std::string &network_id() const { return settings.network_id; }
+  double p0() const { return state.p0; }
+
  private:
   GRFLOW::ShearSettings settings;    // the arguments
   GRFLOW::ShearProtocol state;       // direction, reversals, N, ... (restart)
@@ -52,7 +57,6 @@ class FixGRFLOWShear : public Fix, public GRFLOW::ShearLayout {
 
   void read_network(bool decide);
   void move_wall();
-  double wall_height() const;
 };
 
 }    // namespace LAMMPS_NS

@@ -32,6 +32,7 @@
 #define LMP_GRFLOW_HOST_H
 
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <limits>
 #include <sstream>
@@ -55,6 +56,56 @@ namespace GRFLOW {
       if ((in >> back) && back == value) break;
     }
     return out.str();
+  }
+
+  /* ----------------------------------------------------------------------
+     the keyword-value arguments of a command, from arg[first] on: each
+     keyword must be one of known[] (a name and its number of values);
+     apply(kw, values, what) reads the values of each (what: "command
+     kw", for messages).  An unknown keyword is reported as such (also at
+     the end of the line, before its values are looked for), then missing
+     values, through the host as command ("fix grflow/shear", ...).
+  ------------------------------------------------------------------------- */
+
+  struct Keyword {
+    const char *name;
+    int nvalues;
+  };
+
+  template <class Host, class Apply, std::size_t N>
+  static inline void parse_keywords(int narg, char **arg, int first, const std::string &command,
+                                    const Keyword (&known)[N], Host &host, Apply apply)
+  {
+    int iarg = first;
+    while (iarg < narg) {
+      const std::string kw = arg[iarg];
+      const Keyword *found = nullptr;
+      for (const Keyword &k : known)
+        if (kw == k.name) found = &k;
+      if (!found) {
+        host.fail("Unknown " + command + " keyword: " + kw);
+        return;
+      }
+      const std::string what = command + " " + kw;
+      if (iarg + 1 + found->nvalues > narg) {
+        host.missing(what);
+        return;
+      }
+      apply(kw, arg + iarg + 1, what);
+      iarg += 1 + found->nvalues;
+    }
+  }
+
+  /* ----------------------------------------------------------------------
+     the gap between the two walls of a fix grflow/wall (GRFLOW::FlatWalls,
+     grflow_wall.h): the height of the cell, for the fixes that drive the
+     walls (fix grflow/shear: gamma; fix grflow/compress: the wall speed
+     and the cell volume)
+  ------------------------------------------------------------------------- */
+
+  template <class Walls> static inline double wall_gap(const Walls &walls)
+  {
+    return walls.wall(Walls::HI).z - walls.wall(Walls::LO).z;
   }
 
   /* ----------------------------------------------------------------------

@@ -44,11 +44,9 @@ namespace GRFLOW {
   /* ----------------------------------------------------------------------
      the keywords of compute grflow/network, host-free: region ID, slab f,
      zlimits zlo zhi, volume V, shear ab, p0 value|first, cmax c.  The
-     host reads numbers and reports errors:
-       host.number(const char *) -> double, host.integer(const char *) -> int
-       host.missing(const std::string &cmd)   (no return)
-       host.fail(const std::string &message)  (no return)
-     Region IDs, variables (v_name) and volumes are checked by the host.
+     host reads numbers and reports errors (grflow_host.h; also
+     host.integer(const char *, const std::string &what) -> int).  Region
+     IDs, variables (v_name) and volumes are checked by the host.
   ------------------------------------------------------------------------- */
 
   struct NetworkOptions {
@@ -58,64 +56,19 @@ namespace GRFLOW {
     std::string region;          // empty: the slab of zlimits (or of the box)
     std::string zlo, zhi;        // sample bounds in z: number or v_name; empty: the box
     std::string volume;          // volume of a non-block region: number or v_name
-    bool p0_keyword = false;     // p0 given: no fix may set it (one owner)
+    bool p0_keyword = false;     // p0 given: no fix may own it (one owner)
     bool p0first = false;        // p0 first: the first positive pressure
     bool p0flag = false;         // p0 is set
     double p0 = 0.0;
 
     template <class Host> void parse(int narg, char **arg, int first, Host &host)
     {
-      int iarg = first;
-      while (iarg < narg) {
-        const std::string kw = arg[iarg];
-        static const char *const known[] = {"region", "slab", "zlimits", "volume",
-                                            "shear",  "p0",   "cmax"};
-        bool is_known = false;
-        for (const char *k : known) is_known = is_known || kw == k;
-        if (!is_known) host.fail("Unknown compute grflow/network keyword: " + kw);
-        const int nvalues = (kw == "zlimits") ? 2 : 1;
-        if (iarg + 1 + nvalues > narg) host.missing("compute grflow/network " + kw);
-        const char *value = arg[iarg + 1];
-        if (kw == "region") {
-          region = value;
-        } else if (kw == "slab") {
-          slab = host.number(value, "compute grflow/network slab");
-          if (slab <= 0.0 || slab > 1.0)
-            host.fail("Compute grflow/network slab must be in (0,1], got " + format_number(slab));
-        } else if (kw == "zlimits") {
-          zlo = value;
-          zhi = arg[iarg + 2];
-        } else if (kw == "volume") {
-          volume = value;
-        } else if (kw == "shear") {
-          const std::string c = value;
-          const int a = c.size() == 2 ? c[0] - 'x' : -1;
-          const int b = c.size() == 2 ? c[1] - 'x' : -1;
-          if (a < 0 || a > 2 || b < 0 || b > 2 || a == b)
-            host.fail("Compute grflow/network shear must be two different axes (xy, xz, yz, "
-                      "...), got " +
-                      c);
-          tau_a = a;
-          tau_b = b;
-        } else if (kw == "p0") {
-          p0_keyword = true;
-          if (strcmp(value, "first") == 0) {
-            p0first = true;
-            p0flag = false;
-          } else {
-            p0 = host.number(value, "compute grflow/network p0");
-            if (p0 <= 0.0)
-              host.fail("Compute grflow/network p0 must be > 0, got " + format_number(p0));
-            p0flag = true;
-            p0first = false;
-          }
-        } else if (kw == "cmax") {
-          cmax = host.integer(value, "compute grflow/network cmax");
-          if (cmax < 1 || cmax > 100)
-            host.fail("Compute grflow/network cmax must be in 1..100, got " + std::to_string(cmax));
-        }
-        iarg += 1 + nvalues;
-      }
+      static const Keyword known[] = {{"region", 1}, {"slab", 1}, {"zlimits", 2}, {"volume", 1},
+                                      {"shear", 1},  {"p0", 1},   {"cmax", 1}};
+      parse_keywords(narg, arg, first, "compute grflow/network", known, host,
+                     [&](const std::string &kw, char **values, const std::string &what) {
+                       keyword(kw, values, what, host);
+                     });
       if (!region.empty() && !zlo.empty())
         host.fail("Compute grflow/network: use either region or zlimits, not both");
       if (region.empty() && !volume.empty())
@@ -128,13 +81,67 @@ namespace GRFLOW {
           host.number(values[k]->c_str(), std::string("compute grflow/network ") + what[k]);
     }
 
+    // the values of one keyword of parse()
+    template <class Host>
+    void keyword(const std::string &kw, char **values, const std::string &what, Host &host)
+    {
+      const char *value = values[0];
+      if (kw == "region") {
+        region = value;
+      } else if (kw == "slab") {
+        slab = host.number(value, what);
+        if (slab <= 0.0 || slab > 1.0)
+          host.fail("Compute grflow/network slab must be in (0,1], got " + format_number(slab));
+      } else if (kw == "zlimits") {
+        zlo = value;
+        zhi = values[1];
+      } else if (kw == "volume") {
+        volume = value;
+      } else if (kw == "shear") {
+        const std::string c = value;
+        const int a = c.size() == 2 ? c[0] - 'x' : -1;
+        const int b = c.size() == 2 ? c[1] - 'x' : -1;
+        if (a < 0 || a > 2 || b < 0 || b > 2 || a == b)
+          host.fail("Compute grflow/network shear must be two different axes (xy, xz, yz, "
+                    "...), got " +
+                    c);
+        tau_a = a;
+        tau_b = b;
+      } else if (kw == "p0") {
+        p0_keyword = true;
+        if (strcmp(value, "first") == 0) {
+          p0first = true;
+          p0flag = false;
+        } else {
+          p0 = host.number(value, what);
+          if (p0 <= 0.0)
+            host.fail("Compute grflow/network p0 must be > 0, got " + format_number(p0));
+          p0flag = true;
+          p0first = false;
+        }
+      } else if (kw == "cmax") {
+        cmax = host.integer(value, what);
+        if (cmax < 1 || cmax > 100)
+          host.fail("Compute grflow/network cmax must be in 1..100, got " + std::to_string(cmax));
+      }
+    }
+
     // the output vector from this processor's sums: the sums over all
     // processors of world, then derive_network() (below), or with network
-    // false derive_stress(), its first NSTRESS entries only; with p0
-    // first, the first positive pressure becomes p0 (r_u = 1 - p/p0 needs
-    // p0 > 0)
+    // false derive_stress(), its first NSTRESS entries only; r_u with
+    // reference_p0(owner_p0); with p0 first, the first positive pressure
+    // becomes p0 (r_u = 1 - p/p0 needs p0 > 0)
     void reduce_and_derive(MPI_Comm world, const std::vector<double> &local, double volume,
-                           double *vector, bool network = true);
+                           double *vector, bool network, double owner_p0);
+
+    // p0 of r_u: that of the p0 keyword (its value, or the first positive
+    // pressure once there is one), else owner_p0, that of the fix
+    // grflow/shear that shears with the compute (the fix owns it: it takes
+    // it when shearing starts and keeps it in its restart data), 0 for none
+    double reference_p0(double owner_p0) const
+    {
+      return p0_keyword ? (p0flag ? p0 : 0.0) : owner_p0;
+    }
 
     // the bounds of the slab of the sample between zlo and zhi
     void slab_bounds(double zlo_value, double zhi_value, double &lo, double &hi) const
@@ -330,8 +337,8 @@ namespace GRFLOW {
 
   // the stress sigma_ab = sum l_a f_b / V of the sums, its mean p and its
   // symmetric deviatoric part sym; returns sym:sym
-  static inline double network_stress(const double *total, double volume, double s[3][3],
-                                      double &p, double sym[3][3])
+  static inline double network_stress(const double *total, double volume, double s[3][3], double &p,
+                                      double sym[3][3])
   {
     for (int a = 0; a < 3; a++)
       for (int b = 0; b < 3; b++) s[a][b] = total[NetworkSums::STRESS + 3 * a + b] / volume;
@@ -420,14 +427,16 @@ namespace GRFLOW {
   // add up the whole array (the stress path's has zeros beyond the
   // stress), so that the stress sums are added in the same order.
   inline void NetworkOptions::reduce_and_derive(MPI_Comm world, const std::vector<double> &local,
-                                                double volume, double *vector, bool network)
+                                                double volume, double *vector, bool network,
+                                                double owner_p0)
   {
     std::vector<double> total(local.size());
     MPI_Allreduce(local.data(), total.data(), (int) local.size(), MPI_DOUBLE, MPI_SUM, world);
+    const double p0_ru = reference_p0(owner_p0);
     if (network)
-      derive_network(total.data(), volume, tau_a, tau_b, cmax, p0flag ? p0 : 0.0, vector);
+      derive_network(total.data(), volume, tau_a, tau_b, cmax, p0_ru, vector);
     else
-      derive_stress(total.data(), volume, tau_a, tau_b, p0flag ? p0 : 0.0, vector);
+      derive_stress(total.data(), volume, tau_a, tau_b, p0_ru, vector);
     if (p0first && !p0flag && vector[NetworkLayout::PRESS] > 0.0) {
       p0 = vector[NetworkLayout::PRESS];
       p0flag = true;

@@ -79,32 +79,31 @@ namespace GRFLOW {
       if (rate_max <= 0.0)
         host.fail("Fix grflow/compress rate_max must be > 0, got " + host.text(rate_max));
 
-      for (int iarg = 7; iarg < narg; iarg += 2) {
-        const std::string kw = arg[iarg];
-        // an unknown keyword is reported as such, before its value is read
-        if (kw != "elastic" && kw != "gain" && kw != "tol" && kw != "ke_ratio" && kw != "every")
-          host.fail("Unknown fix grflow/compress keyword: " + kw);
-        const std::string what = "fix grflow/compress " + kw;
-        if (iarg + 2 > narg) {
-          host.missing(what);
-          return;
-        }
-        const char *value = arg[iarg + 1];
-        if (kw == "elastic") {
-          if (std::string(value).compare(0, 2, "v_") != 0)
-            host.fail("Fix grflow/compress elastic takes an equal-style variable v_name, got " +
-                      std::string(value));
-          elastic_var = value + 2;
-        } else if (kw == "every") {
-          servo_every = host.integer(value, what);
-          if (servo_every < 1)
-            host.fail("Fix grflow/compress every must be >= 1, got " + std::to_string(servo_every));
-        } else {
-          double &v = (kw == "gain") ? gain : (kw == "tol" ? tol : ke_ratio_max);
-          v = host.number(value, what);
-          if (v <= 0.0)
-            host.fail("Fix grflow/compress " + kw + " must be > 0, got " + host.text(v));
-        }
+      static const Keyword known[] = {
+          {"elastic", 1}, {"gain", 1}, {"tol", 1}, {"ke_ratio", 1}, {"every", 1}};
+      parse_keywords(narg, arg, 7, "fix grflow/compress", known, host,
+                     [&](const std::string &kw, char **values, const std::string &what) {
+                       keyword(kw, values[0], what, host);
+                     });
+    }
+
+    // the value of one keyword of parse()
+    template <class Host>
+    void keyword(const std::string &kw, const char *value, const std::string &what, Host &host)
+    {
+      if (kw == "elastic") {
+        if (std::string(value).compare(0, 2, "v_") != 0)
+          host.fail("Fix grflow/compress elastic takes an equal-style variable v_name, got " +
+                    std::string(value));
+        elastic_var = value + 2;
+      } else if (kw == "every") {
+        servo_every = host.integer(value, what);
+        if (servo_every < 1)
+          host.fail("Fix grflow/compress every must be >= 1, got " + std::to_string(servo_every));
+      } else if (kw == "gain" || kw == "tol" || kw == "ke_ratio") {
+        double &v = (kw == "gain") ? gain : (kw == "tol" ? tol : ke_ratio_max);
+        v = host.number(value, what);
+        if (v <= 0.0) host.fail("Fix grflow/compress " + kw + " must be > 0, got " + host.text(v));
       }
     }
 

@@ -37,6 +37,7 @@
 #define LMP_GRFLOW_SHEAR_RULE_H
 
 #include "grflow_cycle_count.h"
+#include "grflow_host.h"
 
 #include <cmath>
 #include <cstdint>
@@ -86,38 +87,38 @@ namespace GRFLOW {
       if (tau_amp <= 0.0)
         host.fail("Fix grflow/shear tau_amp must be > 0, got " + host.text(tau_amp));
 
-      for (int iarg = 7; iarg < narg; iarg += 2) {
-        const std::string kw = arg[iarg];
-        // an unknown keyword is reported as such, also at the end of the line
-        if (kw != "every" && kw != "liquefaction" && kw != "stop_cycles" &&
-            kw != "stop_after_liquefaction" && kw != "stop_gamma" && kw != "progress" &&
-            kw != "glue")
-          host.fail("Unknown fix grflow/shear keyword: " + kw);
-        const std::string what = "fix grflow/shear " + kw;
-        if (iarg + 2 > narg) {
-          host.missing(what);
-          return;
-        }
-        const char *value = arg[iarg + 1];
-        if (kw == "every") {
-          check_every = host.integer(value, what);
-          if (check_every < 1) host.fail("Fix grflow/shear every must be >= 1");
-        } else if (kw == "liquefaction") {
-          ru_liq = host.number(value, what);
-          if (ru_liq <= 0.0 || ru_liq > 1.0)
-            host.fail("Fix grflow/shear liquefaction threshold must be in (0,1], got " +
-                      host.text(ru_liq));
-        } else if (kw == "progress") {
-          progress = host.logical(value, what);
-        } else if (kw == "glue") {
-          glue = value;
-        } else {
-          double &stop = (kw == "stop_cycles")
-              ? stop_cycles
-              : (kw == "stop_gamma" ? stop_gamma : stop_cycles_after_il);
-          stop = host.number(value, what);
-          if (stop <= 0.0) host.fail("Fix grflow/shear " + kw + " must be > 0");
-        }
+      static const Keyword known[] = {{"every", 1},       {"liquefaction", 1},
+                                      {"stop_cycles", 1}, {"stop_after_liquefaction", 1},
+                                      {"stop_gamma", 1},  {"progress", 1},
+                                      {"glue", 1}};
+      parse_keywords(narg, arg, 7, "fix grflow/shear", known, host,
+                     [&](const std::string &kw, char **values, const std::string &what) {
+                       keyword(kw, values[0], what, host);
+                     });
+    }
+
+    // the value of one keyword of parse()
+    template <class Host>
+    void keyword(const std::string &kw, const char *value, const std::string &what, Host &host)
+    {
+      if (kw == "every") {
+        check_every = host.integer(value, what);
+        if (check_every < 1) host.fail("Fix grflow/shear every must be >= 1");
+      } else if (kw == "liquefaction") {
+        ru_liq = host.number(value, what);
+        if (ru_liq <= 0.0 || ru_liq > 1.0)
+          host.fail("Fix grflow/shear liquefaction threshold must be in (0,1], got " +
+                    host.text(ru_liq));
+      } else if (kw == "progress") {
+        progress = host.logical(value, what);
+      } else if (kw == "glue") {
+        glue = value;
+      } else if (kw == "stop_cycles" || kw == "stop_gamma" || kw == "stop_after_liquefaction") {
+        double &stop = (kw == "stop_cycles") ? stop_cycles
+            : (kw == "stop_gamma")           ? stop_gamma
+                                             : stop_cycles_after_il;
+        stop = host.number(value, what);
+        if (stop <= 0.0) host.fail("Fix grflow/shear " + kw + " must be > 0");
       }
     }
 
@@ -138,6 +139,12 @@ namespace GRFLOW {
     {
       return "Fix grflow/shear " + std::string(id) + " sets p0 of compute " + network_id +
           " when shearing starts: remove the compute's p0 keyword";
+    }
+    std::string p0_second_owner(const char *id, const char *other) const
+    {
+      return "Fix grflow/shear " + std::string(id) + ": fix grflow/shear " + other +
+          " shears with compute " + network_id +
+          " too, and each sets p0 of its r_u: give each fix a compute of its own";
     }
   };
 
@@ -319,29 +326,19 @@ namespace GRFLOW {
 
   /* ----------------------------------------------------------------------
      the glued layer (atoms with mask & bit) moves rigidly with the top
-     wall: velocity (vw, 0, 0), no spin, and, in a step, x += dt vw
+     wall: velocity (vw, 0, 0), no spin, and, in a step of dt (x given),
+     x += dt vw
   ------------------------------------------------------------------------- */
 
-  static inline void glue_velocity(int nlocal, const int *mask, int bit, double vw, double **v,
-                                   double **omega)
+  static inline void glue_layer(int nlocal, const int *mask, int bit, double vw, double **v,
+                                double **omega, double dt = 0.0, double **x = nullptr)
   {
     for (int i = 0; i < nlocal; i++) {
       if (!(mask[i] & bit)) continue;
       v[i][0] = vw;
       v[i][1] = v[i][2] = 0.0;
       omega[i][0] = omega[i][1] = omega[i][2] = 0.0;
-    }
-  }
-
-  static inline void glue_move(int nlocal, const int *mask, int bit, double vw, double dt,
-                               double **x, double **v, double **omega)
-  {
-    for (int i = 0; i < nlocal; i++) {
-      if (!(mask[i] & bit)) continue;
-      v[i][0] = vw;
-      v[i][1] = v[i][2] = 0.0;
-      omega[i][0] = omega[i][1] = omega[i][2] = 0.0;
-      x[i][0] += dt * vw;
+      if (x) x[i][0] += dt * vw;
     }
   }
 
