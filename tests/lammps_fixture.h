@@ -18,6 +18,10 @@
 #ifndef GRFLOW_TEST_LAMMPS_FIXTURE_H
 #define GRFLOW_TEST_LAMMPS_FIXTURE_H
 
+#include "compute_grflow_network.h"
+#include "fix_grflow_compress.h"
+#include "fix_grflow_shear.h"
+#include "fix_grflow_wall.h"
 #include "grflow_restart.h"
 #include "library.h"
 
@@ -34,6 +38,14 @@
 #include <vector>
 
 namespace grflow_test {
+
+// the output layouts (0-based positions of the vectors), from the style
+// headers: the one source of each (tests/test_layouts.py checks the decks
+// and docs against them)
+using NetVector = LAMMPS_NS::ComputeGRFLOWNetwork;      // GRFLOW::NetworkLayout
+using ShearVector = LAMMPS_NS::FixGRFLOWShear;          // GRFLOW::ShearLayout
+using CompressVector = LAMMPS_NS::FixGRFLOWCompress;    // GRFLOW::CompressLayout
+using WallVector = LAMMPS_NS::FixGRFLOWWall;            // LO_FX ... HI_DY, NVECTOR
 
 // one LAMMPS instance, quiet, closed on destruction
 class Lammps {

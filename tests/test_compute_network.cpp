@@ -30,17 +30,16 @@
 
 #include "lammps_fixture.h"
 
+#include "lammps.h"
+#include "modify.h"
+
 #include <cstdio>
 
 using namespace grflow_test;
 
 namespace {
 
-// documented vector layout, 0-based
-enum {
-  SXX, SYY, SZZ, SXY, SXZ, SYZ, PRESS, TAU, QDEV, SNORM, RU, NP, NFLOAT, NCONTACT, ZG, ZPLAIN,
-  AC, SC, AXX, AYY, AZZ, AXY, AXZ, AYZ, VOLUME, PC0
-};
+using Out = NetVector;    // the positions of the compute's vector (its header's enum)
 
 const double KN = 1.0e6;
 
@@ -52,7 +51,7 @@ std::vector<double> cvec(Lammps &lmp, const char *id)
     char buf[1024] = "";
     lammps_get_last_error_message(lmp.handle, buf, sizeof(buf));
     ADD_FAILURE() << "compute " << id << " vector not available: " << buf;
-    return std::vector<double>(PC0 + 13, 0.0);
+    return std::vector<double>(Out::PC0 + 13, 0.0);
   }
   const int n =
       *(int *) lammps_extract_compute(lmp.handle, id, LMP_STYLE_GLOBAL, LMP_SIZE_VECTOR);
@@ -78,9 +77,10 @@ std::vector<double> slice(const std::vector<double> &v, int first, int n)
 void expect_same(const std::vector<double> &a, const std::vector<double> &b, const std::string &what)
 {
   ASSERT_EQ(a.size(), b.size()) << what;
-  EXPECT_LT(max_rel_diff(slice(a, SXX, RU), slice(b, SXX, RU)), 1.0e-13) << what;
-  const int rest = (int) a.size() - RU;
-  EXPECT_LT(max_rel_diff(slice(a, RU, rest), slice(b, RU, rest)), 1.0e-13) << what;
+  EXPECT_LT(max_rel_diff(slice(a, Out::SXX, Out::RU), slice(b, Out::SXX, Out::RU)), 1.0e-13)
+      << what;
+  const int rest = (int) a.size() - Out::RU;
+  EXPECT_LT(max_rel_diff(slice(a, Out::RU, rest), slice(b, Out::RU, rest)), 1.0e-13) << what;
 }
 
 double box_volume(Lammps &lmp)
@@ -152,23 +152,24 @@ TEST(NetworkHandBuilt, CompressedSimpleCubicLattice)
   ASSERT_EQ(lmp.natoms(), n * n * n);
 
   const auto v = cvec(lmp, "all_");
-  ASSERT_EQ((int) v.size(), PC0 + 13);    // default cmax 12
+  ASSERT_EQ((int) v.size(), Out::PC0 + 13);    // default cmax 12
   const std::vector<double> want = {sigma, sigma, sigma, 0.0, 0.0, 0.0};
-  EXPECT_LT(measured("sc lattice stress vs kn delta / L^2", max_rel_diff(slice(v, SXX, 6), want)),
+  EXPECT_LT(measured("sc lattice stress vs kn delta / L^2",
+                     max_rel_diff(slice(v, Out::SXX, 6), want)),
             1.0e-12);
-  EXPECT_NEAR(v[PRESS], sigma, 1.0e-12 * sigma);
-  for (int k : {TAU, QDEV, SNORM}) EXPECT_LT(fabs(v[k]), 1.0e-12 * sigma) << k;
-  EXPECT_EQ(v[RU], 0.0);    // no p0
-  EXPECT_EQ(v[NP], 64.0);
-  EXPECT_EQ(v[NFLOAT], 0.0);
-  EXPECT_EQ(v[NCONTACT], 64.0 * 6.0 / 2.0);
-  EXPECT_EQ(v[ZG], 6.0);
-  EXPECT_EQ(v[ZPLAIN], 6.0);
-  for (int k = AXX; k <= AYZ; k++) EXPECT_LT(fabs(v[k]), 1.0e-14) << k;
-  EXPECT_LT(fabs(v[AC]), 1.0e-13);
-  EXPECT_GE(v[AC], 0.0);    // sign(0) = +
-  EXPECT_DOUBLE_EQ(v[VOLUME], pow(n * L, 3));
-  for (int c = 0; c <= 12; c++) EXPECT_EQ(v[PC0 + c], c == 6 ? 1.0 : 0.0) << "P_" << c;
+  EXPECT_NEAR(v[Out::PRESS], sigma, 1.0e-12 * sigma);
+  for (int k : {Out::TAU, Out::QDEV, Out::SNORM}) EXPECT_LT(fabs(v[k]), 1.0e-12 * sigma) << k;
+  EXPECT_EQ(v[Out::RU], 0.0);    // no p0
+  EXPECT_EQ(v[Out::NP], 64.0);
+  EXPECT_EQ(v[Out::NFLOAT], 0.0);
+  EXPECT_EQ(v[Out::NCONTACT], 64.0 * 6.0 / 2.0);
+  EXPECT_EQ(v[Out::ZG], 6.0);
+  EXPECT_EQ(v[Out::ZPLAIN], 6.0);
+  for (int k = Out::AXX; k <= Out::AYZ; k++) EXPECT_LT(fabs(v[k]), 1.0e-14) << k;
+  EXPECT_LT(fabs(v[Out::AC]), 1.0e-13);
+  EXPECT_GE(v[Out::AC], 0.0);    // sign(0) = +
+  EXPECT_DOUBLE_EQ(v[Out::VOLUME], pow(n * L, 3));
+  for (int c = 0; c <= 12; c++) EXPECT_EQ(v[Out::PC0 + c], c == 6 ? 1.0 : 0.0) << "P_" << c;
 
   // central half of the height: layers 2 and 3 of 4 (32 spheres).  The z
   // contacts to layers 1 and 4 cross the boundary and count with the arm
@@ -176,16 +177,16 @@ TEST(NetworkHandBuilt, CompressedSimpleCubicLattice)
   // stress as the whole lattice.  Coordination stays 6 (both ends' contacts).
   const auto h = cvec(lmp, "half");
   EXPECT_LT(measured("sc lattice half slab stress vs kn delta / L^2",
-                     max_rel_diff(slice(h, SXX, 6), want)),
+                     max_rel_diff(slice(h, Out::SXX, 6), want)),
             1.0e-12);
-  EXPECT_EQ(h[NP], 32.0);
-  EXPECT_EQ(h[NCONTACT], 32.0 * 6.0 / 2.0);
-  EXPECT_EQ(h[ZG], 6.0);
-  EXPECT_DOUBLE_EQ(h[VOLUME], 0.5 * pow(n * L, 3));
+  EXPECT_EQ(h[Out::NP], 32.0);
+  EXPECT_EQ(h[Out::NCONTACT], 32.0 * 6.0 / 2.0);
+  EXPECT_EQ(h[Out::ZG], 6.0);
+  EXPECT_DOUBLE_EQ(h[Out::VOLUME], 0.5 * pow(n * L, 3));
 
   // r_u = 1 - p/p0
-  EXPECT_NEAR(cvec(lmp, "p0")[RU], 0.5, 1.0e-12);
-  EXPECT_NEAR(cvec(lmp, "p0b")[RU], -3.0, 1.0e-12);
+  EXPECT_NEAR(cvec(lmp, "p0")[Out::RU], 0.5, 1.0e-12);
+  EXPECT_NEAR(cvec(lmp, "p0b")[Out::RU], -3.0, 1.0e-12);
 }
 
 TEST(NetworkHandBuilt, ChainOfUnequalSpheresAndFloater)
@@ -221,29 +222,29 @@ TEST(NetworkHandBuilt, ChainOfUnequalSpheresAndFloater)
   const double szz = (l12 * F12 + l23 * F23) / V;
   auto v = cvec(lmp, "net");
   EXPECT_LT(measured("chain stress vs l F / V",
-                     max_rel_diff(slice(v, SXX, 6), {0.0, 0.0, szz, 0.0, 0.0, 0.0})),
+                     max_rel_diff(slice(v, Out::SXX, 6), {0.0, 0.0, szz, 0.0, 0.0, 0.0})),
             1.0e-12);
   const Invariants inv = diag_invariants(0.0, 0.0, szz);
-  EXPECT_NEAR(v[PRESS], szz / 3.0, 1.0e-12 * szz);
-  EXPECT_NEAR(v[QDEV], szz, 1.0e-12 * szz);    // q = |szz| for uniaxial stress
-  EXPECT_NEAR(v[QDEV], inv.q, 1.0e-12 * szz);
-  EXPECT_NEAR(v[SNORM], sqrt(2.0 / 3.0) * szz, 1.0e-12 * szz);
-  EXPECT_EQ(v[TAU], 0.0);
-  EXPECT_EQ(v[NP], 3.0);
-  EXPECT_EQ(v[NFLOAT], 0.0);
-  EXPECT_EQ(v[NCONTACT], 2.0);
-  EXPECT_DOUBLE_EQ(v[ZG], 4.0 / 3.0);
-  EXPECT_DOUBLE_EQ(v[ZPLAIN], 4.0 / 3.0);
-  EXPECT_DOUBLE_EQ(v[PC0 + 1], 2.0 / 3.0);
-  EXPECT_DOUBLE_EQ(v[PC0 + 2], 1.0 / 3.0);
+  EXPECT_NEAR(v[Out::PRESS], szz / 3.0, 1.0e-12 * szz);
+  EXPECT_NEAR(v[Out::QDEV], szz, 1.0e-12 * szz);    // q = |szz| for uniaxial stress
+  EXPECT_NEAR(v[Out::QDEV], inv.q, 1.0e-12 * szz);
+  EXPECT_NEAR(v[Out::SNORM], sqrt(2.0 / 3.0) * szz, 1.0e-12 * szz);
+  EXPECT_EQ(v[Out::TAU], 0.0);
+  EXPECT_EQ(v[Out::NP], 3.0);
+  EXPECT_EQ(v[Out::NFLOAT], 0.0);
+  EXPECT_EQ(v[Out::NCONTACT], 2.0);
+  EXPECT_DOUBLE_EQ(v[Out::ZG], 4.0 / 3.0);
+  EXPECT_DOUBLE_EQ(v[Out::ZPLAIN], 4.0 / 3.0);
+  EXPECT_DOUBLE_EQ(v[Out::PC0 + 1], 2.0 / 3.0);
+  EXPECT_DOUBLE_EQ(v[Out::PC0 + 2], 1.0 / 3.0);
   // all contacts along z: <nn> = e_z e_z, a = 15/2 diag(-1/3,-1/3,2/3),
   // a:a = 75/2, a_c = sqrt(3/2 a:a) = 15/2, coaxial with s: S_c = 1
   EXPECT_LT(measured("chain fabric vs 15/2 dev(e_z e_z)",
-                     max_rel_diff(slice(v, AXX, 6), {-2.5, -2.5, 5.0, 0.0, 0.0, 0.0})),
+                     max_rel_diff(slice(v, Out::AXX, 6), {-2.5, -2.5, 5.0, 0.0, 0.0, 0.0})),
             1.0e-14);
-  EXPECT_NEAR(v[AC], 7.5, 1.0e-13);
-  EXPECT_NEAR(v[SC], 1.0, 1.0e-13);
-  EXPECT_DOUBLE_EQ(v[VOLUME], V);
+  EXPECT_NEAR(v[Out::AC], 7.5, 1.0e-13);
+  EXPECT_NEAR(v[Out::SC], 1.0, 1.0e-13);
+  EXPECT_DOUBLE_EQ(v[Out::VOLUME], V);
 
   // middle sphere alone: both contacts cross the boundary and count with
   // its arms r2 - ov/2
@@ -251,54 +252,54 @@ TEST(NetworkHandBuilt, ChainOfUnequalSpheresAndFloater)
   auto m = cvec(lmp, "mid");
   const double szz_mid = ((r2 - ov12 / 2) * F12 + (r2 - ov23 / 2) * F23) / Vmid;
   EXPECT_LT(measured("middle sphere stress vs arm r - delta/2",
-                     max_rel_diff(slice(m, SXX, 6), {0.0, 0.0, szz_mid, 0.0, 0.0, 0.0})),
+                     max_rel_diff(slice(m, Out::SXX, 6), {0.0, 0.0, szz_mid, 0.0, 0.0, 0.0})),
             1.0e-12);
-  EXPECT_DOUBLE_EQ(m[VOLUME], Vmid);
-  EXPECT_EQ(m[NP], 1.0);
-  EXPECT_EQ(m[NCONTACT], 1.0);    // half of its 2 contacts
-  EXPECT_EQ(m[ZG], 2.0);
-  EXPECT_EQ(m[PC0 + 2], 1.0);
-  EXPECT_NEAR(m[AC], 7.5, 1.0e-13);
+  EXPECT_DOUBLE_EQ(m[Out::VOLUME], Vmid);
+  EXPECT_EQ(m[Out::NP], 1.0);
+  EXPECT_EQ(m[Out::NCONTACT], 1.0);    // half of its 2 contacts
+  EXPECT_EQ(m[Out::ZG], 2.0);
+  EXPECT_EQ(m[Out::PC0 + 2], 1.0);
+  EXPECT_NEAR(m[Out::AC], 7.5, 1.0e-13);
 
   auto b = cvec(lmp, "bot");
   const double szz_bot = (r1 - ov12 / 2) * F12 / Vmid;
-  EXPECT_NEAR(b[SZZ], szz_bot, 1.0e-12 * szz_bot);
-  EXPECT_EQ(b[NP], 1.0);
-  EXPECT_EQ(b[NCONTACT], 0.5);
-  EXPECT_EQ(b[PC0 + 1], 1.0);
+  EXPECT_NEAR(b[Out::SZZ], szz_bot, 1.0e-12 * szz_bot);
+  EXPECT_EQ(b[Out::NP], 1.0);
+  EXPECT_EQ(b[Out::NCONTACT], 0.5);
+  EXPECT_EQ(b[Out::PC0 + 1], 1.0);
 
   // group of the bottom two: sphere 3 is outside, its contact with 2
   // counts for 2 with 2's arm only
   auto g = cvec(lmp, "lower");
   const double szz_low = (l12 * F12 + (r2 - ov23 / 2) * F23) / V;
-  EXPECT_NEAR(g[SZZ], szz_low, 1.0e-12 * szz_low);
-  EXPECT_EQ(g[NP], 2.0);
-  EXPECT_EQ(g[NCONTACT], 1.5);
-  EXPECT_EQ(g[ZG], 1.5);
+  EXPECT_NEAR(g[Out::SZZ], szz_low, 1.0e-12 * szz_low);
+  EXPECT_EQ(g[Out::NP], 2.0);
+  EXPECT_EQ(g[Out::NCONTACT], 1.5);
+  EXPECT_EQ(g[Out::ZG], 1.5);
 
   // last bin of P_c is c >= cmax
   auto c1 = cvec(lmp, "c1");
-  ASSERT_EQ((int) c1.size(), PC0 + 2);
-  EXPECT_DOUBLE_EQ(c1[PC0 + 0], 0.0);
-  EXPECT_DOUBLE_EQ(c1[PC0 + 1], 1.0);
+  ASSERT_EQ((int) c1.size(), Out::PC0 + 2);
+  EXPECT_DOUBLE_EQ(c1[Out::PC0 + 0], 0.0);
+  EXPECT_DOUBLE_EQ(c1[Out::PC0 + 1], 1.0);
 
   // a floater far away: counted in N_p and N_p^0 but not in z_g
   sphere(lmp, 8.0e-3, 2.0e-3, 8.0e-3, 1.0e-3);
   lmp.cmd("run 0");
   v = cvec(lmp, "net");
-  EXPECT_EQ(v[NP], 4.0);
-  EXPECT_EQ(v[NFLOAT], 1.0);
-  EXPECT_EQ(v[NCONTACT], 2.0);
-  EXPECT_DOUBLE_EQ(v[ZG], 4.0 / 3.0);    // 2 N_c / (N_p - N_p^0)
-  EXPECT_DOUBLE_EQ(v[ZPLAIN], 1.0);      // 2 N_c / N_p
-  EXPECT_DOUBLE_EQ(v[PC0 + 0], 0.25);    // floaters are in the denominator
-  EXPECT_DOUBLE_EQ(v[PC0 + 1], 0.5);
-  EXPECT_DOUBLE_EQ(v[PC0 + 2], 0.25);
-  EXPECT_NEAR(v[SZZ], szz, 1.0e-12 * szz);    // stress unchanged
-  EXPECT_NEAR(v[AC], 7.5, 1.0e-13);
+  EXPECT_EQ(v[Out::NP], 4.0);
+  EXPECT_EQ(v[Out::NFLOAT], 1.0);
+  EXPECT_EQ(v[Out::NCONTACT], 2.0);
+  EXPECT_DOUBLE_EQ(v[Out::ZG], 4.0 / 3.0);    // 2 N_c / (N_p - N_p^0)
+  EXPECT_DOUBLE_EQ(v[Out::ZPLAIN], 1.0);      // 2 N_c / N_p
+  EXPECT_DOUBLE_EQ(v[Out::PC0 + 0], 0.25);    // floaters are in the denominator
+  EXPECT_DOUBLE_EQ(v[Out::PC0 + 1], 0.5);
+  EXPECT_DOUBLE_EQ(v[Out::PC0 + 2], 0.25);
+  EXPECT_NEAR(v[Out::SZZ], szz, 1.0e-12 * szz);    // stress unchanged
+  EXPECT_NEAR(v[Out::AC], 7.5, 1.0e-13);
   c1 = cvec(lmp, "c1");
-  EXPECT_DOUBLE_EQ(c1[PC0 + 0], 0.25);
-  EXPECT_DOUBLE_EQ(c1[PC0 + 1], 0.75);
+  EXPECT_DOUBLE_EQ(c1[Out::PC0 + 0], 0.25);
+  EXPECT_DOUBLE_EQ(c1[Out::PC0 + 1], 0.75);
 }
 
 TEST(NetworkHandBuilt, FabricAgainstStressGivesNegativeAc)
@@ -320,26 +321,26 @@ TEST(NetworkHandBuilt, FabricAgainstStressGivesNegativeAc)
   const double sxx = (d - ovx) * KN * ovx / V, szz = 4 * (d - ovz) * KN * ovz / V;
   const auto v = cvec(lmp, "net");
   EXPECT_LT(measured("x pair + z chain stress",
-                     max_rel_diff(slice(v, SXX, 6), {sxx, 0.0, szz, 0.0, 0.0, 0.0})),
+                     max_rel_diff(slice(v, Out::SXX, 6), {sxx, 0.0, szz, 0.0, 0.0, 0.0})),
             1.0e-9);
   const double a[3] = {-1.0, -2.5, 3.5};
   EXPECT_LT(measured("x pair + z chain fabric",
-                     max_rel_diff(slice(v, AXX, 6), {a[0], a[1], a[2], 0.0, 0.0, 0.0})),
+                     max_rel_diff(slice(v, Out::AXX, 6), {a[0], a[1], a[2], 0.0, 0.0, 0.0})),
             1.0e-14);
   const Invariants inv = diag_invariants(sxx, 0.0, szz);
   const double s[3] = {sxx - inv.p, -inv.p, szz - inv.p};
   const double as = a[0] * s[0] + a[1] * s[1] + a[2] * s[2];
   const double sc = as / (sqrt(19.5) * inv.snorm);
   ASSERT_LT(sc, -0.1);    // the arrangement does what it is meant to
-  EXPECT_NEAR(v[SC], sc, 1.0e-9);
-  EXPECT_NEAR(measured("negative a_c", v[AC]), -sqrt(29.25), 1.0e-13);
-  EXPECT_NEAR(v[QDEV], inv.q, 1.0e-9 * inv.q);
-  EXPECT_NEAR(v[SNORM], inv.snorm, 1.0e-9 * inv.snorm);
-  EXPECT_EQ(v[NP], 7.0);
-  EXPECT_EQ(v[NCONTACT], 5.0);
-  EXPECT_DOUBLE_EQ(v[ZPLAIN], 10.0 / 7.0);
-  EXPECT_DOUBLE_EQ(v[PC0 + 1], 4.0 / 7.0);
-  EXPECT_DOUBLE_EQ(v[PC0 + 2], 3.0 / 7.0);
+  EXPECT_NEAR(v[Out::SC], sc, 1.0e-9);
+  EXPECT_NEAR(measured("negative a_c", v[Out::AC]), -sqrt(29.25), 1.0e-13);
+  EXPECT_NEAR(v[Out::QDEV], inv.q, 1.0e-9 * inv.q);
+  EXPECT_NEAR(v[Out::SNORM], inv.snorm, 1.0e-9 * inv.snorm);
+  EXPECT_EQ(v[Out::NP], 7.0);
+  EXPECT_EQ(v[Out::NCONTACT], 5.0);
+  EXPECT_DOUBLE_EQ(v[Out::ZPLAIN], 10.0 / 7.0);
+  EXPECT_DOUBLE_EQ(v[Out::PC0 + 1], 4.0 / 7.0);
+  EXPECT_DOUBLE_EQ(v[Out::PC0 + 2], 3.0 / 7.0);
 }
 
 TEST(NetworkHandBuilt, OffDiagonalComponentsAndShearAxes)
@@ -372,19 +373,19 @@ TEST(NetworkHandBuilt, OffDiagonalComponentsAndShearAxes)
   const std::vector<double> want = {(w[0] + w[1]) / (2 * V), (w[0] + w[2]) / (2 * V),
                                     (w[1] + w[2]) / (2 * V), w[0] / (2 * V),
                                     w[1] / (2 * V),          w[2] / (2 * V)};
-  EXPECT_LT(measured("diagonal pairs stress", max_rel_diff(slice(v, SXX, 6), want)), 1.0e-9);
+  EXPECT_LT(measured("diagonal pairs stress", max_rel_diff(slice(v, Out::SXX, 6), want)), 1.0e-9);
   EXPECT_LT(measured("diagonal pairs fabric",
-                     max_rel_diff(slice(v, AXX, 6), {0.0, 0.0, 0.0, 1.25, 1.25, 1.25})),
+                     max_rel_diff(slice(v, Out::AXX, 6), {0.0, 0.0, 0.0, 1.25, 1.25, 1.25})),
             1.0e-12);
-  EXPECT_NEAR(v[AC], 3.75, 1.0e-12);
+  EXPECT_NEAR(v[Out::AC], 3.75, 1.0e-12);
   // tau = -(s_ab + s_ba)/2: a compressed contact along x+z pushes the top
   // toward -x, i.e. resists a shear with the top moving -x: tau < 0
-  EXPECT_NEAR(v[TAU], -want[4], 1.0e-9 * want[4]);
-  EXPECT_EQ(cvec(lmp, "zx")[TAU], v[TAU]);
-  EXPECT_NEAR(cvec(lmp, "xy")[TAU], -want[3], 1.0e-9 * want[3]);
-  EXPECT_NEAR(cvec(lmp, "yz")[TAU], -want[5], 1.0e-9 * want[5]);
-  EXPECT_EQ(v[NP], 6.0);
-  EXPECT_EQ(v[ZG], 1.0);
+  EXPECT_NEAR(v[Out::TAU], -want[4], 1.0e-9 * want[4]);
+  EXPECT_EQ(cvec(lmp, "zx")[Out::TAU], v[Out::TAU]);
+  EXPECT_NEAR(cvec(lmp, "xy")[Out::TAU], -want[3], 1.0e-9 * want[3]);
+  EXPECT_NEAR(cvec(lmp, "yz")[Out::TAU], -want[5], 1.0e-9 * want[5]);
+  EXPECT_EQ(v[Out::NP], 6.0);
+  EXPECT_EQ(v[Out::ZG], 1.0);
 }
 
 TEST(NetworkHandBuilt, P0FirstTakesFirstPositivePressure)
@@ -399,18 +400,18 @@ TEST(NetworkHandBuilt, P0FirstTakesFirstPositivePressure)
   grflow_pair(lmp);
   lmp.cmds({"compute net all grflow/network slab 1.0 p0 first", "run 0"});
   auto v = cvec(lmp, "net");
-  EXPECT_EQ(v[PRESS], 0.0);
-  EXPECT_EQ(v[RU], 0.0);    // no pressure yet: p0 not taken (r_u would be 0/0)
-  EXPECT_EQ(v[NFLOAT], 2.0);
+  EXPECT_EQ(v[Out::PRESS], 0.0);
+  EXPECT_EQ(v[Out::RU], 0.0);    // no pressure yet: p0 not taken (r_u would be 0/0)
+  EXPECT_EQ(v[Out::NFLOAT], 2.0);
 
   auto p_of = [&](double ov) { return (d - ov) * KN * ov / (3.0 * V); };
   lmp.cmds({"set atom 2 z " + fmt_double(z0 + d - 1.0e-5), "run 0"});
   v = cvec(lmp, "net");
-  EXPECT_NEAR(v[PRESS], p_of(1.0e-5), 1.0e-9 * p_of(1.0e-5));
-  EXPECT_EQ(v[RU], 0.0);    // p0 = this p
+  EXPECT_NEAR(v[Out::PRESS], p_of(1.0e-5), 1.0e-9 * p_of(1.0e-5));
+  EXPECT_EQ(v[Out::RU], 0.0);    // p0 = this p
   lmp.cmds({"set atom 2 z " + fmt_double(z0 + d - 3.0e-5), "run 0"});
   v = cvec(lmp, "net");
-  EXPECT_NEAR(measured("r_u with p0 first", v[RU]), 1.0 - p_of(3.0e-5) / p_of(1.0e-5), 1.0e-9);
+  EXPECT_NEAR(measured("r_u with p0 first", v[Out::RU]), 1.0 - p_of(3.0e-5) / p_of(1.0e-5), 1.0e-9);
 }
 
 // ---------------------------------------------------------------------------
@@ -461,11 +462,11 @@ void compare_with_stock_computes(Lammps &lmp, const std::string &tag, bool all_l
 
   std::vector<double> stock(6);
   for (int k = 0; k < 6; k++) stock[k] = -sr[k] / V;
-  EXPECT_LT(measured(tag + " stress vs stress/atom", max_rel_diff(slice(v, SXX, 6), stock)),
+  EXPECT_LT(measured(tag + " stress vs stress/atom", max_rel_diff(slice(v, Out::SXX, 6), stock)),
             1.0e-10);
-  EXPECT_NEAR(v[VOLUME], V, 1.0e-14 * V);
-  EXPECT_EQ(v[NP], n);
-  EXPECT_GT(v[PRESS], 0.0);
+  EXPECT_NEAR(v[Out::VOLUME], V, 1.0e-14 * V);
+  EXPECT_EQ(v[Out::NP], n);
+  EXPECT_GT(v[Out::PRESS], 0.0);
   // tangential forces are really there: sum |f_t| / sum f_n over contacts
   EXPECT_GT(measured(tag + " sum|ft|/sum fn", pl[1] / pl[0]), 1.0e-2);
 
@@ -493,7 +494,7 @@ void compare_with_stock_computes(Lammps &lmp, const std::string &tag, bool all_l
   }
   measured(tag + " touching pairs without normal force", unloaded);
   if (all_loaded) EXPECT_EQ(unloaded, 0.0);
-  EXPECT_EQ(v[NCONTACT], touching - unloaded);
+  EXPECT_EQ(v[Out::NCONTACT], touching - unloaded);
   auto *nt_ptr =
       (double *) lammps_extract_compute(lmp.handle, "fab", LMP_STYLE_GLOBAL, LMP_TYPE_SCALAR);
   ASSERT_NE(nt_ptr, nullptr);
@@ -505,20 +506,20 @@ void compare_with_stock_computes(Lammps &lmp, const std::string &tag, bool all_l
   std::vector<double> want(6);
   for (int k = 0; k < 6; k++) want[k] = (nt * fab[k] - 7.5 * devz[k]) / (nt - unloaded);
   EXPECT_LT(measured(tag + " fabric vs compute fabric (less unloaded pairs)",
-                     max_rel_diff(slice(v, AXX, 6), want)),
+                     max_rel_diff(slice(v, Out::AXX, 6), want)),
             1.0e-12);
   if (unloaded > 0.0)    // and the correction was needed
-    EXPECT_GT(max_rel_diff(slice(v, AXX, 6), fab), 1.0e-6);
-  EXPECT_DOUBLE_EQ(v[ZPLAIN], 2.0 * v[NCONTACT] / n);
+    EXPECT_GT(max_rel_diff(slice(v, Out::AXX, 6), fab), 1.0e-6);
+  EXPECT_DOUBLE_EQ(v[Out::ZPLAIN], 2.0 * v[Out::NCONTACT] / n);
   // P_c sums to 1 and its mean is z
   double sum = 0.0, mean = 0.0;
-  for (size_t c = PC0; c < v.size(); c++) {
+  for (size_t c = Out::PC0; c < v.size(); c++) {
     sum += v[c];
-    mean += (c - PC0) * v[c];
+    mean += (c - Out::PC0) * v[c];
   }
   EXPECT_NEAR(sum, 1.0, 1.0e-14);
-  if (v.back() == 0.0) EXPECT_NEAR(mean, v[ZPLAIN], 1.0e-13);
-  EXPECT_NEAR(v[PC0], v[NFLOAT] / n, 1.0e-15);
+  if (v.back() == 0.0) EXPECT_NEAR(mean, v[Out::ZPLAIN], 1.0e-13);
+  EXPECT_NEAR(v[Out::PC0], v[Out::NFLOAT] / n, 1.0e-15);
 }
 
 void stock_comparison(const std::string &data_read_tag, const std::vector<std::string> &pair,
@@ -586,12 +587,12 @@ TEST_F(NetworkPackings, SlabHoldsTheCentralParticles)
   int count = 0;
   for (int i = 0; i < lmp.natoms(); i++) count += (x[3 * i + 2] >= lo && x[3 * i + 2] < hi);
   const auto s = cvec(lmp, "slab"), w = cvec(lmp, "whole");
-  EXPECT_EQ(s[NP], count);
+  EXPECT_EQ(s[Out::NP], count);
   EXPECT_GT(count, 0.6 * lmp.natoms());
   EXPECT_LT(count, lmp.natoms());
-  EXPECT_NEAR(s[VOLUME], 0.8 * w[VOLUME], 1.0e-14 * w[VOLUME]);
-  EXPECT_GT(measured("slab 0.8 vs whole box stress", max_rel_diff(slice(s, SXX, 6),
-                                                                  slice(w, SXX, 6))),
+  EXPECT_NEAR(s[Out::VOLUME], 0.8 * w[Out::VOLUME], 1.0e-14 * w[Out::VOLUME]);
+  EXPECT_GT(measured("slab 0.8 vs whole box stress", max_rel_diff(slice(s, Out::SXX, 6),
+                                                                  slice(w, Out::SXX, 6))),
             1.0e-6);
 
   // the same sub-volume given as a region block, as zlimits with variables
@@ -641,27 +642,27 @@ TEST_F(NetworkPackings, RegionPartitionAddsUp)
   double vol = 0.0, np = 0.0, ends = 0.0, nfloat = 0.0;
   for (const char *id : {"A", "B", "C"}) {
     const auto r = cvec(lmp, id);
-    vol += r[VOLUME];
-    np += r[NP];
-    nfloat += r[NFLOAT];
-    ends += 2.0 * r[NCONTACT];
+    vol += r[Out::VOLUME];
+    np += r[Out::NP];
+    nfloat += r[Out::NFLOAT];
+    ends += 2.0 * r[Out::NCONTACT];
     for (int k = 0; k < 6; k++) {
-      vs[k] += r[VOLUME] * r[SXX + k];
-      fab[k] += 2.0 * r[NCONTACT] * r[AXX + k];
+      vs[k] += r[Out::VOLUME] * r[Out::SXX + k];
+      fab[k] += 2.0 * r[Out::NCONTACT] * r[Out::AXX + k];
     }
-    for (int c = 0; c <= 12; c++) hist[c] += r[NP] * r[PC0 + c];
-    EXPECT_GT(r[NP], 20.0) << id;
+    for (int c = 0; c <= 12; c++) hist[c] += r[Out::NP] * r[Out::PC0 + c];
+    EXPECT_GT(r[Out::NP], 20.0) << id;
   }
-  EXPECT_NEAR(vol, w[VOLUME], 1.0e-14 * vol);
-  EXPECT_EQ(np, w[NP]);
-  EXPECT_EQ(nfloat, w[NFLOAT]);
-  EXPECT_EQ(ends, 2.0 * w[NCONTACT]);
+  EXPECT_NEAR(vol, w[Out::VOLUME], 1.0e-14 * vol);
+  EXPECT_EQ(np, w[Out::NP]);
+  EXPECT_EQ(nfloat, w[Out::NFLOAT]);
+  EXPECT_EQ(ends, 2.0 * w[Out::NCONTACT]);
   std::vector<double> whole_vs(6), whole_fab(6), whole_hist(13);
   for (int k = 0; k < 6; k++) {
-    whole_vs[k] = w[VOLUME] * w[SXX + k];
-    whole_fab[k] = 2.0 * w[NCONTACT] * w[AXX + k];
+    whole_vs[k] = w[Out::VOLUME] * w[Out::SXX + k];
+    whole_fab[k] = 2.0 * w[Out::NCONTACT] * w[Out::AXX + k];
   }
-  for (int c = 0; c <= 12; c++) whole_hist[c] = w[NP] * w[PC0 + c];
+  for (int c = 0; c <= 12; c++) whole_hist[c] = w[Out::NP] * w[Out::PC0 + c];
   EXPECT_LT(measured("partition: sum V_k sigma_k vs V sigma", max_rel_diff(vs, whole_vs)),
             1.0e-12);
   EXPECT_LT(measured("partition: fabric sums", max_rel_diff(fab, whole_fab)), 1.0e-12);
@@ -670,7 +671,7 @@ TEST_F(NetworkPackings, RegionPartitionAddsUp)
   // and a region's stress is not the whole-box stress
   const auto a = cvec(lmp, "A");
   EXPECT_GT(measured("region A vs whole box stress",
-                     max_rel_diff(slice(a, SXX, 6), slice(w, SXX, 6))),
+                     max_rel_diff(slice(a, Out::SXX, 6), slice(w, Out::SXX, 6))),
             1.0e-6);
 }
 
@@ -693,26 +694,55 @@ TEST_F(NetworkPackings, TauPositiveWhenTopMovesPlusX)
     auto v = cvec(lmp, "net");
     // during a run the dashpot forces differ: single() sees the velocities
     // at the end of the step, the pair style used the half-step ones
-    const double during = max_rel_diff(slice(v, SXX, 6), cvec(lmp, "pv"));
+    const double during = max_rel_diff(slice(v, Out::SXX, 6), cvec(lmp, "pv"));
     measured("triclinic stress vs compute pressure virial during the run", during);
     EXPECT_LT(during, 1.0e-3);
     lmp.cmd("run 0");
     v = cvec(lmp, "net");
-    const double tau = v[TAU];
-    measured("tau/p for xz erate " + fmt_double(rate), tau / v[PRESS]);
+    const double tau = v[Out::TAU];
+    measured("tau/p for xz erate " + fmt_double(rate), tau / v[Out::PRESS]);
     if (rate > 0) {
-      EXPECT_GT(tau, 0.02 * v[PRESS]);
-      EXPECT_LT(v[SXZ], 0.0);
+      EXPECT_GT(tau, 0.02 * v[Out::PRESS]);
+      EXPECT_LT(v[Out::SXZ], 0.0);
     } else {
-      EXPECT_LT(tau, -0.02 * v[PRESS]);
-      EXPECT_GT(v[SXZ], 0.0);
+      EXPECT_LT(tau, -0.02 * v[Out::PRESS]);
+      EXPECT_GT(v[Out::SXZ], 0.0);
     }
-    EXPECT_EQ(cvec(lmp, "zx")[TAU], tau);
+    EXPECT_EQ(cvec(lmp, "zx")[Out::TAU], tau);
     const auto pv = cvec(lmp, "pv");
     EXPECT_GT(fabs(lmp.thermo("xz")), 0.0);
     EXPECT_LT(measured("triclinic stress vs compute pressure virial after run 0",
-                       max_rel_diff(slice(v, SXX, 6), pv)),
+                       max_rel_diff(slice(v, Out::SXX, 6), pv)),
               1.0e-10);
+  }
+}
+
+// the stress path (compute_stress(), what fix grflow/shear's checks read)
+// gives the vector's first NSTRESS entries to the bit, for a moving
+// packing, a slab and a region, with and without p0
+TEST_F(NetworkPackings, StressPathIsTheVectorsStress)
+{
+  Lammps lmp;
+  read(lmp);
+  lmp.cmds(GRFLOW_PAIR);
+  lmp.cmds({"change_box all triclinic", "fix nve all nve/sphere",
+            "fix shear all deform 1 xz erate 50.0 remap x units box",
+            "compute slab all grflow/network slab 0.8",
+            "region mid block INF INF INF INF EDGE EDGE side in",
+            "compute reg all grflow/network region mid p0 1.0e3",
+            "thermo_style custom step c_slab[8]", "thermo 500", "run 1000 post no"});
+  auto *lammps = (LAMMPS_NS::LAMMPS *) lmp.handle;
+  for (const char *id : {"slab", "reg"}) {
+    auto *net = dynamic_cast<LAMMPS_NS::ComputeGRFLOWNetwork *>(
+        lammps->modify->get_compute_by_id(id));
+    ASSERT_NE(net, nullptr);
+    const double *s = net->compute_stress();
+    const std::vector<double> stress(s, s + Out::NSTRESS);
+    net->compute_vector();
+    EXPECT_GT(fabs(stress[Out::TAU]), 0.0) << id;
+    for (int k = 0; k < Out::NSTRESS; k++) EXPECT_EQ(stress[k], net->vector[k]) << id << " " << k;
+    // a current vector's entries serve the stress path
+    EXPECT_EQ(net->current_stress()[Out::TAU], net->vector[Out::TAU]) << id;
   }
 }
 
@@ -726,14 +756,14 @@ TEST_F(NetworkPackings, P0FirstFollowsPressure)
             "compute ref all grflow/network", "compute first all grflow/network p0 first",
             "compute fixed all grflow/network p0 1.0e5",
             "thermo_style custom step c_ref[7] c_first[11] c_fixed[11]", "thermo 100", "run 0"});
-  const double p_first = cvec(lmp, "ref")[PRESS];
-  EXPECT_EQ(cvec(lmp, "first")[RU], 0.0);
+  const double p_first = cvec(lmp, "ref")[Out::PRESS];
+  EXPECT_EQ(cvec(lmp, "first")[Out::RU], 0.0);
   lmp.cmd("run 500");
-  const double p = cvec(lmp, "ref")[PRESS];
-  const double ru = cvec(lmp, "first")[RU];
+  const double p = cvec(lmp, "ref")[Out::PRESS];
+  const double ru = cvec(lmp, "first")[Out::RU];
   EXPECT_NEAR(measured("r_u after compression (p0 first)", ru), 1.0 - p / p_first, 1.0e-13);
   EXPECT_GT(fabs(ru), 1.0e-3);    // p has changed
-  EXPECT_NEAR(cvec(lmp, "fixed")[RU], 1.0 - p / 1.0e5, 1.0e-13);
+  EXPECT_NEAR(cvec(lmp, "fixed")[Out::RU], 1.0 - p / 1.0e5, 1.0e-13);
 }
 
 // ---------------------------------------------------------------------------
@@ -825,8 +855,8 @@ TEST(NetworkErrors, BadSetupAtRun)
   Lammps ok;
   ok.cmds(with_pair);
   ok.cmds({"compute n all grflow/network region ball volume 3.0e-8", "run 0"});
-  EXPECT_EQ(cvec(ok, "n")[VOLUME], 3.0e-8);
-  EXPECT_EQ(cvec(ok, "n")[NP], 1.0);
+  EXPECT_EQ(cvec(ok, "n")[Out::VOLUME], 3.0e-8);
+  EXPECT_EQ(cvec(ok, "n")[Out::NP], 1.0);
 }
 
 TEST(NetworkErrors, NeedsGranularPairAndARun)
@@ -868,8 +898,8 @@ TEST(NetworkErrors, NeedsGranularPairAndARun)
     lmp.cmds(GRFLOW_PAIR);
     lmp.cmds({"run 0", "region low block INF INF INF INF INF 0.004",
               "compute n all grflow/network region low"});
-    EXPECT_EQ(cvec(lmp, "n")[NP], 0.0);    // the sphere at z = 0.005 is not in it
-    EXPECT_DOUBLE_EQ(cvec(lmp, "n")[VOLUME], 0.01 * 0.01 * 0.004);
+    EXPECT_EQ(cvec(lmp, "n")[Out::NP], 0.0);    // the sphere at z = 0.005 is not in it
+    EXPECT_DOUBLE_EQ(cvec(lmp, "n")[Out::VOLUME], 0.01 * 0.01 * 0.004);
   }
 }
 

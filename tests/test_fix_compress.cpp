@@ -43,31 +43,6 @@ using namespace grflow_test;
 
 namespace {
 
-// documented vector layout of fix grflow/compress, 0-based
-enum {
-  CONVERGED,
-  SXX,
-  SYY,
-  SZZ,
-  ERRMAX,
-  KE,
-  EEL,
-  RATIO,
-  RATE_X,
-  RATE_Y,
-  RATE_Z,
-  VOLUME,
-  VOID,
-  LX,
-  LY,
-  HEIGHT,
-  FACTOR_X,
-  FACTOR_Y,
-  FACTOR_Z,
-  NCOMP
-};
-enum { LO_Z = 3, HI_Z = 9, NWALL = 12 };    // fix grflow/wall
-
 const double PT = 1.0e5, RATE = 20.0, DT = 1.0e-7;
 const int EVERY = 10;
 
@@ -84,7 +59,7 @@ void cell(Lammps &lmp)
 
 std::vector<double> comp(Lammps &lmp)
 {
-  return lmp.fix_vector("cmp", NCOMP);
+  return lmp.fix_vector("cmp", CompressVector::NOUT);
 }
 
 // the cell of a restart file, with the commands a restart does not keep
@@ -108,25 +83,26 @@ TEST(Compress, FreeShrinkAtMaximumRate)
   lmp.cmd(compress_cmd());
   const double lx0 = lmp.thermo("lx"), ly0 = lmp.thermo("ly");
   const double xmid = 0.5 * (lmp.thermo("xlo") + lmp.thermo("xhi"));
-  const auto w0 = lmp.fix_vector("w", NWALL);
-  const double h0 = w0[HI_Z] - w0[LO_Z];
+  const auto w0 = lmp.fix_vector("w", WallVector::NVECTOR);
+  const double h0 = w0[WallVector::HI_Z] - w0[WallVector::LO_Z];
   const int n = EVERY - 1;    // before the second servo update
   lmp.cmd("run " + std::to_string(n) + " post no");
   const auto c = comp(lmp);
-  const auto w = lmp.fix_vector("w", NWALL);
+  const auto w = lmp.fix_vector("w", WallVector::NVECTOR);
   // spheres apart: no stress, full compression rate everywhere
-  EXPECT_EQ(c[SXX], 0.0);
-  EXPECT_EQ(c[RATE_X], -RATE);
-  EXPECT_EQ(c[RATE_Y], -RATE);
-  EXPECT_EQ(c[RATE_Z], -RATE);
+  EXPECT_EQ(c[CompressVector::SXX], 0.0);
+  EXPECT_EQ(c[CompressVector::RATE_X], -RATE);
+  EXPECT_EQ(c[CompressVector::RATE_Y], -RATE);
+  EXPECT_EQ(c[CompressVector::RATE_Z], -RATE);
   const double shrink = std::pow(1.0 - RATE * DT, n);
   EXPECT_NEAR(lmp.thermo("lx"), lx0 * shrink, 1e-15 * lx0);
   EXPECT_NEAR(lmp.thermo("ly"), ly0 * shrink, 1e-15 * ly0);
   EXPECT_NEAR(0.5 * (lmp.thermo("xlo") + lmp.thermo("xhi")), xmid, 1e-15 * lx0);
-  EXPECT_NEAR(w[LO_Z], w0[LO_Z] + n * DT * 0.5 * RATE * h0, 1e-15 * h0);
-  EXPECT_NEAR(w[HI_Z], w0[HI_Z] - n * DT * 0.5 * RATE * h0, 1e-15 * h0);
-  EXPECT_DOUBLE_EQ(c[HEIGHT], w[HI_Z] - w[LO_Z]);
-  EXPECT_DOUBLE_EQ(c[VOLUME], lmp.thermo("lx") * lmp.thermo("ly") * c[HEIGHT]);
+  EXPECT_NEAR(w[WallVector::LO_Z], w0[WallVector::LO_Z] + n * DT * 0.5 * RATE * h0, 1e-15 * h0);
+  EXPECT_NEAR(w[WallVector::HI_Z], w0[WallVector::HI_Z] - n * DT * 0.5 * RATE * h0, 1e-15 * h0);
+  EXPECT_DOUBLE_EQ(c[CompressVector::HEIGHT], w[WallVector::HI_Z] - w[WallVector::LO_Z]);
+  EXPECT_DOUBLE_EQ(c[CompressVector::VOLUME],
+                   lmp.thermo("lx") * lmp.thermo("ly") * c[CompressVector::HEIGHT]);
   measured("relative error of Lx after free shrink", fabs(lmp.thermo("lx") / (lx0 * shrink) - 1));
 }
 
@@ -173,49 +149,51 @@ TEST(Compress, ReachesAndHoldsTarget)
         (double *) lammps_extract_compute(lmp.handle, "net", LMP_STYLE_GLOBAL, LMP_TYPE_VECTOR);
     ASSERT_NE(net, nullptr);
     // the stresses are the compute's (this is a servo step)
-    EXPECT_EQ(c[SXX], net[0]);
-    EXPECT_EQ(c[SYY], net[1]);
-    EXPECT_EQ(c[SZZ], net[2]);
+    EXPECT_EQ(c[CompressVector::SXX], net[0]);
+    EXPECT_EQ(c[CompressVector::SYY], net[1]);
+    EXPECT_EQ(c[CompressVector::SZZ], net[2]);
     double err = 0.0;
-    for (int a = 0; a < 3; a++) err = std::max(err, fabs(c[SXX + a] - PT) / PT);
-    EXPECT_DOUBLE_EQ(c[ERRMAX], err);
-    const bool conv = err <= tol && c[RATIO] <= 1.0e-3;
-    if (c[CONVERGED] != (conv ? 1.0 : 0.0)) flag_ok = false;
+    for (int a = 0; a < 3; a++) err = std::max(err, fabs(c[CompressVector::SXX + a] - PT) / PT);
+    EXPECT_DOUBLE_EQ(c[CompressVector::ERRMAX], err);
+    const bool conv = err <= tol && c[CompressVector::RATIO] <= 1.0e-3;
+    if (c[CompressVector::CONVERGED] != (conv ? 1.0 : 0.0)) flag_ok = false;
     nconv += conv;
-    if (c[EEL] > 0.0) EXPECT_DOUBLE_EQ(c[RATIO], c[KE] / c[EEL]);
+    if (c[CompressVector::EEL] > 0.0)
+      EXPECT_DOUBLE_EQ(c[CompressVector::RATIO], c[CompressVector::KE] / c[CompressVector::EEL]);
     if (first_in < 0 && err <= tol) first_in = (long) lmp.thermo("step");
     if (first_in >= 0) worst_after = std::max(worst_after, err);
-    min_e = std::min(min_e, c[VOID]);
+    min_e = std::min(min_e, c[CompressVector::VOID]);
   }
   EXPECT_TRUE(flag_ok);
   ASSERT_GE(first_in, 0) << "never within tolerance";
   printf("[ measured ] first within 1%% of %g Pa at step %ld; worst error after that %.2e; "
          "converged at %d of 60 samples; final e = %.4f\n",
-         PT, first_in, worst_after, nconv, comp(lmp)[VOID]);
+         PT, first_in, worst_after, nconv, comp(lmp)[CompressVector::VOID]);
   // reached (first_in >= 0 above), held from then on, and long enough:
   // more than 10 converged samples of 5000 steps (which also places the
   // first within the first 245000 steps of the 300000)
   EXPECT_LE(worst_after, tol);
   EXPECT_GT(nconv, 10);
   const auto c = comp(lmp);
-  EXPECT_EQ(c[CONVERGED], 1.0);
+  EXPECT_EQ(c[CompressVector::CONVERGED], 1.0);
   // a servo that converges by itself keeps its gain
-  EXPECT_EQ(c[FACTOR_X], 1.0);
-  EXPECT_EQ(c[FACTOR_Y], 1.0);
-  EXPECT_EQ(c[FACTOR_Z], 1.0);
+  EXPECT_EQ(c[CompressVector::FACTOR_X], 1.0);
+  EXPECT_EQ(c[CompressVector::FACTOR_Y], 1.0);
+  EXPECT_EQ(c[CompressVector::FACTOR_Z], 1.0);
 
   // the void ratio from the box, the walls and the radii
   std::vector<double> rad(lmp.natoms());
   lammps_gather_atoms(lmp.handle, (char *) "radius", 1, 1, rad.data());
   double vs = 0.0;
   for (double r : rad) vs += 4.0 / 3.0 * M_PI * r * r * r;
-  const auto w = lmp.fix_vector("w", NWALL);
-  const double v = lmp.thermo("lx") * lmp.thermo("ly") * (w[HI_Z] - w[LO_Z]);
-  EXPECT_NEAR(c[VOID], v / vs - 1.0, 1e-12);
-  EXPECT_GT(c[VOID], 0.5);    // a real packing, not overlapped
-  EXPECT_LT(c[VOID], 1.0);
+  const auto w = lmp.fix_vector("w", WallVector::NVECTOR);
+  const double v =
+      lmp.thermo("lx") * lmp.thermo("ly") * (w[WallVector::HI_Z] - w[WallVector::LO_Z]);
+  EXPECT_NEAR(c[CompressVector::VOID], v / vs - 1.0, 1e-12);
+  EXPECT_GT(c[CompressVector::VOID], 0.5);    // a real packing, not overlapped
+  EXPECT_LT(c[CompressVector::VOID], 1.0);
   // the elastic energy is the pair's potential energy
-  EXPECT_NEAR(c[EEL], lmp.thermo("pe"), 1e-12 * c[EEL]);
+  EXPECT_NEAR(c[CompressVector::EEL], lmp.thermo("pe"), 1e-12 * c[CompressVector::EEL]);
 }
 
 TEST(Compress, OvershootCycleIsDamped)
@@ -233,13 +211,13 @@ TEST(Compress, OvershootCycleIsDamped)
   const long reached = (long) lmp.thermo("step");
   const auto c = comp(lmp);
   printf("[ measured ] gain 20: within 1%% at step %ld, gain factors %g %g %g\n", reached,
-         c[FACTOR_X], c[FACTOR_Y], c[FACTOR_Z]);
+         c[CompressVector::FACTOR_X], c[CompressVector::FACTOR_Y], c[CompressVector::FACTOR_Z]);
   // the halt fired: converged within the 400000 steps in which the servo
   // without damping never did
   EXPECT_LT(reached, 400000);
-  EXPECT_LE(c[ERRMAX], 0.01);
-  EXPECT_LT(c[FACTOR_Z], 1.0);    // the walls' axis was damped
-  for (int k : {FACTOR_X, FACTOR_Y, FACTOR_Z}) {
+  EXPECT_LE(c[CompressVector::ERRMAX], 0.01);
+  EXPECT_LT(c[CompressVector::FACTOR_Z], 1.0);    // the walls' axis was damped
+  for (int k : {CompressVector::FACTOR_X, CompressVector::FACTOR_Y, CompressVector::FACTOR_Z}) {
     EXPECT_GE(c[k], 1.0 / 1024.0);
     const double halvings = -std::log2(c[k]);
     EXPECT_EQ(halvings, std::round(halvings)) << "factor " << c[k] << " is not a power of 1/2";
@@ -249,7 +227,7 @@ TEST(Compress, OvershootCycleIsDamped)
   double worst = 0.0;
   for (int k = 0; k < 10; k++) {
     lmp.cmd("run 2000 post no");
-    worst = std::max(worst, comp(lmp)[ERRMAX]);
+    worst = std::max(worst, comp(lmp)[CompressVector::ERRMAX]);
   }
   measured("gain 20: largest stress error over the next 20000 steps", worst);
   EXPECT_LE(worst, 0.02);
@@ -298,7 +276,9 @@ TEST(Compress, EveryUpdateFeedsTheOvershootRule)
   };
   auto errors = [&]() {
     const auto c = comp(lmp);
-    return std::vector<double>{(c[SXX] - PT) / PT, (c[SYY] - PT) / PT, (c[SZZ] - PT) / PT};
+    return std::vector<double>{(c[CompressVector::SXX] - PT) / PT,
+                               (c[CompressVector::SYY] - PT) / PT,
+                               (c[CompressVector::SZZ] - PT) / PT};
   };
   int overshoots = 0;
   for (int k = 0; k < 20; k++) {
@@ -342,7 +322,7 @@ TEST(Compress, RestartKeepsGainFactors)
     ref = comp(lmp);
     lmp.cmd("write_restart " + file);
   }
-  ASSERT_LT(ref[FACTOR_Z], 1.0);
+  ASSERT_LT(ref[CompressVector::FACTOR_Z], 1.0);
   Lammps lmp;
   lmp.cmds({"read_restart " + file, "comm_modify vel yes",
             "fix w all grflow/wall 1.0e6 1.15 mut 0.1 zlo 0 zhi 1", "variable zlo equal f_w[4]",
@@ -350,7 +330,8 @@ TEST(Compress, RestartKeepsGainFactors)
             "compute net all grflow/network zlimits v_zlo v_zhi slab 1.0",
             compress_cmd("gain 20")});
   const auto got = comp(lmp);
-  for (int k : {FACTOR_X, FACTOR_Y, FACTOR_Z, RATE_X, RATE_Y, RATE_Z})
+  for (int k : {CompressVector::FACTOR_X, CompressVector::FACTOR_Y, CompressVector::FACTOR_Z,
+                CompressVector::RATE_X, CompressVector::RATE_Y, CompressVector::RATE_Z})
     EXPECT_EQ(got[k], ref[k]) << "entry " << k;
 }
 
@@ -378,25 +359,28 @@ TEST(Compress, RestartContinues)
     ASSERT_NE(net, nullptr);
     double errmax = 0.0;
     for (int a = 0; a < 3; a++) {
-      EXPECT_EQ(c0[SXX + a], net[a]) << "sigma " << a;
+      EXPECT_EQ(c0[CompressVector::SXX + a], net[a]) << "sigma " << a;
       errmax = std::max(errmax, fabs(net[a] - PT) / PT);
     }
-    EXPECT_GT(c0[SZZ], 0.0);
-    EXPECT_EQ(c0[ERRMAX], errmax);
-    EXPECT_GT(c0[KE], 0.0);
-    EXPECT_GT(c0[EEL], 0.0);
+    EXPECT_GT(c0[CompressVector::SZZ], 0.0);
+    EXPECT_EQ(c0[CompressVector::ERRMAX], errmax);
+    EXPECT_GT(c0[CompressVector::KE], 0.0);
+    EXPECT_GT(c0[CompressVector::EEL], 0.0);
     lmp.cmd("run 20000 post no");
     got = comp(lmp);
     got.push_back(lmp.thermo("lx"));
   }
   // restarted neighbor lists sum in another order: round-off only
-  for (int k : {SXX, SYY, SZZ, RATE_X, RATE_Z, VOLUME, HEIGHT, NCOMP}) {
+  for (int k : {CompressVector::SXX, CompressVector::SYY, CompressVector::SZZ,
+                CompressVector::RATE_X, CompressVector::RATE_Z, CompressVector::VOLUME,
+                CompressVector::HEIGHT, CompressVector::NOUT}) {
     const double d = fabs(got[k] - ref[k]) / std::max(fabs(ref[k]), 1e-300);
     EXPECT_LT(d, 1e-6) << "entry " << k << ": " << got[k] << " vs " << ref[k];
   }
   measured("restart: relative difference of sigma_zz after 20000 steps",
-           fabs(got[SZZ] / ref[SZZ] - 1.0));
-  measured("restart: relative difference of Lx", fabs(got[NCOMP] / ref[NCOMP] - 1.0));
+           fabs(got[CompressVector::SZZ] / ref[CompressVector::SZZ] - 1.0));
+  measured("restart: relative difference of Lx",
+           fabs(got[CompressVector::NOUT] / ref[CompressVector::NOUT] - 1.0));
 }
 
 TEST(Compress, ReadsRestartWithoutDampingState)
@@ -422,7 +406,8 @@ TEST(Compress, ReadsRestartWithoutDampingState)
     lmp.cmd("run 20000 post no");
     ref = comp(lmp);
   }
-  for (int k : {FACTOR_X, FACTOR_Y, FACTOR_Z}) ASSERT_EQ(ref_start[k], 1.0) << "entry " << k;
+  for (int k : {CompressVector::FACTOR_X, CompressVector::FACTOR_Y, CompressVector::FACTOR_Z})
+    ASSERT_EQ(ref_start[k], 1.0) << "entry " << k;
 
   const std::string bytes = file_bytes(file);
   const size_t at = grflow_block(bytes, 13.0);    // the compress fix's 13 values
@@ -453,10 +438,11 @@ TEST(Compress, ReadsRestartWithoutDampingState)
     Lammps lmp;
     resume_cell(lmp, marked);
     const auto c = comp(lmp);
-    EXPECT_EQ(c[RATE_X], marked_values[0]);
-    EXPECT_EQ(c[RATE_Y], marked_values[1]);
-    EXPECT_EQ(c[RATE_Z], marked_values[2]);
-    for (int k : {FACTOR_X, FACTOR_Y, FACTOR_Z}) EXPECT_EQ(c[k], 1.0) << "entry " << k;
+    EXPECT_EQ(c[CompressVector::RATE_X], marked_values[0]);
+    EXPECT_EQ(c[CompressVector::RATE_Y], marked_values[1]);
+    EXPECT_EQ(c[CompressVector::RATE_Z], marked_values[2]);
+    for (int k : {CompressVector::FACTOR_X, CompressVector::FACTOR_Y, CompressVector::FACTOR_Z})
+      EXPECT_EQ(c[k], 1.0) << "entry " << k;
   }
 
   {
@@ -467,19 +453,22 @@ TEST(Compress, ReadsRestartWithoutDampingState)
     lmp.cmd("run 20000 post no");
     got = comp(lmp);
   }
-  for (int k : {FACTOR_X, FACTOR_Y, FACTOR_Z}) {
+  for (int k : {CompressVector::FACTOR_X, CompressVector::FACTOR_Y, CompressVector::FACTOR_Z}) {
     EXPECT_EQ(got_start[k], 1.0) << "entry " << k;
     EXPECT_EQ(got[k], 1.0) << "entry " << k;
   }
-  for (int k : {RATE_X, RATE_Y, RATE_Z}) EXPECT_EQ(got_start[k], ref_start[k]) << "entry " << k;
+  for (int k : {CompressVector::RATE_X, CompressVector::RATE_Y, CompressVector::RATE_Z})
+    EXPECT_EQ(got_start[k], ref_start[k]) << "entry " << k;
   // restarted neighbor lists sum in another order: round-off only (as in
   // RestartContinuesTheServo)
-  for (int k : {SXX, SYY, SZZ, RATE_X, RATE_Z, VOLUME, HEIGHT}) {
+  for (int k :
+       {CompressVector::SXX, CompressVector::SYY, CompressVector::SZZ, CompressVector::RATE_X,
+        CompressVector::RATE_Z, CompressVector::VOLUME, CompressVector::HEIGHT}) {
     const double d = fabs(got[k] - ref[k]) / std::max(fabs(ref[k]), 1e-300);
     EXPECT_LT(d, 1e-6) << "entry " << k << ": " << got[k] << " vs " << ref[k];
   }
   measured("legacy restart: relative difference of sigma_zz after 20000 steps",
-           fabs(got[SZZ] / ref[SZZ] - 1.0));
+           fabs(got[CompressVector::SZZ] / ref[CompressVector::SZZ] - 1.0));
 }
 
 TEST(Compress, DamagedRestartData)
@@ -531,14 +520,15 @@ TEST(Compress, ElasticEnergyFromAVariable)
       (double *) lammps_extract_compute(lmp.handle, "fsq", LMP_STYLE_GLOBAL, LMP_TYPE_SCALAR);
   ASSERT_NE(fsq, nullptr);
   const double sumsq = *fsq;
-  EXPECT_GT(c[EEL], 0.0);
-  EXPECT_NEAR(c[EEL], sumsq / 2.0e6, 1e-12 * c[EEL]);
-  EXPECT_DOUBLE_EQ(c[RATIO], c[KE] / c[EEL]);
+  EXPECT_GT(c[CompressVector::EEL], 0.0);
+  EXPECT_NEAR(c[CompressVector::EEL], sumsq / 2.0e6, 1e-12 * c[CompressVector::EEL]);
+  EXPECT_DOUBLE_EQ(c[CompressVector::RATIO], c[CompressVector::KE] / c[CompressVector::EEL]);
   // the normal springs hold most of the pair's elastic energy
   const double pe = lmp.thermo("pe");
-  printf("[ measured ] sum fn^2/(2 kn) = %.6g J, pair energy = %.6g J\n", c[EEL], pe);
-  EXPECT_GT(c[EEL], 0.5 * pe);
-  EXPECT_LT(c[EEL], 1.5 * pe);
+  printf("[ measured ] sum fn^2/(2 kn) = %.6g J, pair energy = %.6g J\n", c[CompressVector::EEL],
+         pe);
+  EXPECT_GT(c[CompressVector::EEL], 0.5 * pe);
+  EXPECT_LT(c[CompressVector::EEL], 1.5 * pe);
 }
 
 TEST(Compress, ElasticVariableOfTheEnergyBetweenServoSteps)
@@ -553,7 +543,7 @@ TEST(Compress, ElasticVariableOfTheEnergyBetweenServoSteps)
     lmp.cmds({"variable eel equal pe", "reset_timestep 5", compress_cmd("elastic v_eel"),
               "run 150000 post no"});
     const auto c = comp(lmp);
-    EXPECT_GT(c[EEL], 0.0);
+    EXPECT_GT(c[CompressVector::EEL], 0.0);
     EXPECT_EQ((long) lmp.thermo("step"), 150005L);
     lmp.cmd("write_restart " + file);
   }
@@ -561,7 +551,7 @@ TEST(Compress, ElasticVariableOfTheEnergyBetweenServoSteps)
   resume_cell(lmp, file, "elastic v_eel");
   lmp.cmds({"variable eel equal pe", "run 100 post no"});
   EXPECT_EQ((long) lmp.thermo("step"), 150105L);
-  EXPECT_GT(comp(lmp)[EEL], 0.0);
+  EXPECT_GT(comp(lmp)[CompressVector::EEL], 0.0);
 }
 
 TEST(Compress, WallCoefficientByFixModify)
@@ -575,7 +565,7 @@ TEST(Compress, WallCoefficientByFixModify)
     if (modify) lmp.cmd("fix_modify w mut 0.1");
     lmp.cmds({compress_cmd(), "run 170000 post no"});
     auto x = lmp.gather3("x");
-    const auto w = lmp.fix_vector("w", NWALL);
+    const auto w = lmp.fix_vector("w", WallVector::NVECTOR);
     x.push_back(w[2]);    // normal force on the bottom wall
     return x;
   };

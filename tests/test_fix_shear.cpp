@@ -44,29 +44,6 @@ using namespace grflow_test;
 
 namespace {
 
-// documented vector layout of fix grflow/shear, 0-based
-enum {
-  DIRECTION,
-  REVERSALS,
-  XWALL,
-  GAMMA,
-  TAU,
-  PRESS,
-  RU,
-  P0,
-  STEP_IL,
-  TIME_IL,
-  N_IL,
-  N_EVENT,
-  DONE,
-  EVENT,
-  NSHEAR
-};
-// fix grflow/wall: per wall Fx Fy Fz z dx dy
-enum { LO_Z = 3, HI_Z = 9, HI_DX = 10, NWALL = 12 };
-// compute grflow/network
-enum { C_PRESS = 6, C_TAU = 7, C_RU = 10 };
-
 const double VX = 0.02, DT = 1.0e-7;
 const int EVERY = 20;
 
@@ -77,11 +54,11 @@ std::vector<double> fvec(Lammps &lmp, const char *id, int n)
 
 std::vector<double> shear(Lammps &lmp)
 {
-  return fvec(lmp, "sh", NSHEAR);
+  return fvec(lmp, "sh", ShearVector::NOUT);
 }
 std::vector<double> wallv(Lammps &lmp)
 {
-  return fvec(lmp, "w", NWALL);
+  return fvec(lmp, "w", WallVector::NVECTOR);
 }
 
 std::vector<double> cvec(Lammps &lmp, const char *id)
@@ -142,7 +119,7 @@ class Shear : public ::testing::Test {
               "compute net all grflow/network zlimits v_zlo v_zhi"});
     if (!before_run.empty()) lmp.cmd(before_run);
     lmp.cmd("run 0 post no");
-    return cvec(lmp, "net")[C_PRESS];
+    return cvec(lmp, "net")[NetVector::PRESS];
   }
   static std::string shear_cmd(double p, const std::string &extra = "")
   {
@@ -185,28 +162,28 @@ TEST_F(Shear, WallVelocityAndReversalRule)
   ASSERT_EQ(rec.size(), 301u);
 
   // at the start: moving +x (or reversed at once if tau >= tau_amp already)
-  EXPECT_EQ(rec[0].sh[REVERSALS], rec[0].net[C_TAU] >= amp ? 1.0 : 0.0);
+  EXPECT_EQ(rec[0].sh[ShearVector::REVERSALS], rec[0].net[NetVector::TAU] >= amp ? 1.0 : 0.0);
 
-  double xw = rec[0].wall[HI_DX], xerr = 0.0;
+  double xw = rec[0].wall[WallVector::HI_DX], xerr = 0.0;
   int dir = 1, nrev = 0, nplus = 0, nminus = 0, nzero = 0;
   bool await_zero = false;
   double n_event = 0.0;
   std::vector<long> rev_steps;
-  const double h0 = rec[0].wall[HI_Z] - rec[0].wall[LO_Z];
+  const double h0 = rec[0].wall[WallVector::HI_Z] - rec[0].wall[WallVector::LO_Z];
   for (size_t k = 0; k < rec.size(); k++) {
     const auto &r = rec[k];
     if (k > 0) {
       // the wall moved EVERY steps at the velocity set at the last check
       xw += EVERY * DT * dir * VX;
-      xerr = std::max(xerr, std::fabs(r.sh[XWALL] - xw));
-      EXPECT_EQ(r.sh[XWALL], r.wall[HI_DX]);
+      xerr = std::max(xerr, std::fabs(r.sh[ShearVector::XWALL] - xw));
+      EXPECT_EQ(r.sh[ShearVector::XWALL], r.wall[WallVector::HI_DX]);
     }
     // tau, p, r_u of the fix are those of the compute at the same step
-    ASSERT_EQ(r.sh[TAU], r.net[C_TAU]) << r.step;
-    ASSERT_EQ(r.sh[PRESS], r.net[C_PRESS]) << r.step;
-    ASSERT_EQ(r.sh[RU], r.net[C_RU]) << r.step;
+    ASSERT_EQ(r.sh[ShearVector::TAU], r.net[NetVector::TAU]) << r.step;
+    ASSERT_EQ(r.sh[ShearVector::PRESS], r.net[NetVector::PRESS]) << r.step;
+    ASSERT_EQ(r.sh[ShearVector::RU], r.net[NetVector::RU]) << r.step;
     // the rule, applied by hand
-    const double tau = r.net[C_TAU];
+    const double tau = r.net[NetVector::TAU];
     int event = 0;
     if (await_zero && ((dir < 0 && tau <= 0.0) || (dir > 0 && tau >= 0.0))) {
       await_zero = false;
@@ -224,14 +201,14 @@ TEST_F(Shear, WallVelocityAndReversalRule)
       n_event = 0.5 * nrev - 0.25;    // reversal k is at N = k/2 - 1/4
     }
     // the event flag: 1 on a reversal step, 2 on the first zero-crossing after one
-    ASSERT_EQ(r.sh[EVENT], event) << "step " << r.step;
-    ASSERT_EQ(r.sh[DIRECTION], dir) << "step " << r.step << " tau " << tau;
-    ASSERT_EQ(r.sh[REVERSALS], nrev) << "step " << r.step;
-    EXPECT_EQ(r.sh[N_EVENT], n_event) << "step " << r.step;
-    EXPECT_DOUBLE_EQ(r.sh[GAMMA], r.sh[XWALL] / h0);
+    ASSERT_EQ(r.sh[ShearVector::EVENT], event) << "step " << r.step;
+    ASSERT_EQ(r.sh[ShearVector::DIRECTION], dir) << "step " << r.step << " tau " << tau;
+    ASSERT_EQ(r.sh[ShearVector::REVERSALS], nrev) << "step " << r.step;
+    EXPECT_EQ(r.sh[ShearVector::N_EVENT], n_event) << "step " << r.step;
+    EXPECT_DOUBLE_EQ(r.sh[ShearVector::GAMMA], r.sh[ShearVector::XWALL] / h0);
     // constant height and volume, to the last bit
-    EXPECT_EQ(r.wall[HI_Z] - r.wall[LO_Z], h0);
-    EXPECT_EQ(r.wall[HI_Z], rec[0].wall[HI_Z]);
+    EXPECT_EQ(r.wall[WallVector::HI_Z] - r.wall[WallVector::LO_Z], h0);
+    EXPECT_EQ(r.wall[WallVector::HI_Z], rec[0].wall[WallVector::HI_Z]);
     EXPECT_EQ(r.lx, rec[0].lx);
     EXPECT_EQ(r.ly, rec[0].ly);
     EXPECT_EQ(r.vol, rec[0].vol);
@@ -239,7 +216,7 @@ TEST_F(Shear, WallVelocityAndReversalRule)
   printf("[ measured ] p0 = %.6g Pa, tau_amp = %.6g Pa, reversal steps:%s\n", p, amp,
          join(rev_steps).c_str());
   measured("max |x_w - vx dt sum(direction)| (m)", xerr);
-  measured("x_w at the end (m)", rec.back().sh[XWALL]);
+  measured("x_w at the end (m)", rec.back().sh[ShearVector::XWALL]);
   EXPECT_LT(xerr, 1.0e-18);
   // not trivial: reversals both ways
   EXPECT_GE(nplus, 2);
@@ -254,9 +231,9 @@ TEST_F(Shear, P0RuAndInitialLiquefaction)
   const double R = 0.002;
   lmp.cmd(shear_cmd(p, "liquefaction " + fmt_double(R)));
   const auto rec = run_chunks(lmp, 300);
-  EXPECT_EQ(rec[0].sh[P0], p);
-  EXPECT_EQ(rec[0].sh[PRESS], p);
-  EXPECT_EQ(rec[0].sh[RU], 0.0);
+  EXPECT_EQ(rec[0].sh[ShearVector::P0], p);
+  EXPECT_EQ(rec[0].sh[ShearVector::PRESS], p);
+  EXPECT_EQ(rec[0].sh[ShearVector::RU], 0.0);
   long first = -1;
   double first_time = -1.0, maxru = 0.0;
   // N at initial liquefaction by hand, from the event flag and the event
@@ -264,35 +241,36 @@ TEST_F(Shear, P0RuAndInitialLiquefaction)
   // before it and the event after it
   double n_a = 0.0, t_a = rec[0].time, n_il = -1.0, n_il_a = 0.0, t_il_a = 0.0;
   for (const auto &r : rec) {
-    if (r.sh[EVENT] != 0.0) {
-      const double n = r.sh[REVERSALS] * 0.5 - (r.sh[EVENT] == 1.0 ? 0.25 : 0.0);
+    if (r.sh[ShearVector::EVENT] != 0.0) {
+      const double n =
+          r.sh[ShearVector::REVERSALS] * 0.5 - (r.sh[ShearVector::EVENT] == 1.0 ? 0.25 : 0.0);
       if (first >= 0 && n_il < 0.0)
         n_il = n_il_a + (n - n_il_a) * (first_time - t_il_a) / (r.time - t_il_a);
       n_a = n;
       t_a = r.time;
     }
-    EXPECT_EQ(r.sh[P0], p);
-    EXPECT_NEAR(r.sh[RU], 1.0 - r.sh[PRESS] / p, 1.0e-15);
-    maxru = std::max(maxru, r.sh[RU]);
-    if (first < 0 && r.sh[RU] >= R) {
+    EXPECT_EQ(r.sh[ShearVector::P0], p);
+    EXPECT_NEAR(r.sh[ShearVector::RU], 1.0 - r.sh[ShearVector::PRESS] / p, 1.0e-15);
+    maxru = std::max(maxru, r.sh[ShearVector::RU]);
+    if (first < 0 && r.sh[ShearVector::RU] >= R) {
       first = r.step;
       first_time = r.time;
       n_il_a = n_a;
       t_il_a = t_a;
       if (r.time == t_a) n_il = n_a;
     }
-    EXPECT_EQ(r.sh[STEP_IL], (double) first) << r.step;
+    EXPECT_EQ(r.sh[ShearVector::STEP_IL], (double) first) << r.step;
     if (first < 0) {
-      EXPECT_EQ(r.sh[TIME_IL], -1.0);
-      EXPECT_EQ(r.sh[N_IL], -1.0);
+      EXPECT_EQ(r.sh[ShearVector::TIME_IL], -1.0);
+      EXPECT_EQ(r.sh[ShearVector::N_IL], -1.0);
     } else {
-      EXPECT_EQ(r.sh[TIME_IL], first_time);
+      EXPECT_EQ(r.sh[ShearVector::TIME_IL], first_time);
       // -1 until the event after initial liquefaction; the same division
       // of the same numbers, so equal to round-off of the operation order
       if (n_il < 0.0)
-        EXPECT_EQ(r.sh[N_IL], -1.0) << r.step;
+        EXPECT_EQ(r.sh[ShearVector::N_IL], -1.0) << r.step;
       else
-        EXPECT_NEAR(r.sh[N_IL], n_il, 1.0e-14 * (1.0 + n_il)) << r.step;
+        EXPECT_NEAR(r.sh[ShearVector::N_IL], n_il, 1.0e-14 * (1.0 + n_il)) << r.step;
     }
   }
   measured("max r_u", maxru);
@@ -322,13 +300,44 @@ TEST_F(Shear, ComputeWithItsOwnP0IsRefused)
   }
 }
 
+// p0 of the compute's r_u has one owner: two fixes cannot shear with one compute
+TEST_F(Shear, TwoFixesOnOneComputeAreRefused)
+{
+  Lammps lmp;
+  const double p = read(lmp);
+  lmp.cmds({shear_cmd(p), "fix sh2 all grflow/shear w net " + fmt_double(VX) + " " +
+                              fmt_double(0.3 * p)});
+  const std::string msg = lmp.error_of("run 0 post no");
+  EXPECT_NE(msg.find("shears with compute net too, and each sets p0 of its r_u"),
+            std::string::npos)
+      << msg;
+}
+
+// the compute's r_u is that of the fix's p0, at the start (0) and after it
+TEST_F(Shear, ComputeReadsTheFixP0)
+{
+  Lammps lmp;
+  const double p = read(lmp);
+  EXPECT_EQ(cvec(lmp, "net")[NetVector::RU], 0.0);    // no p0 yet
+  lmp.cmds({shear_cmd(p), "run 0 post no"});
+  const auto f = fvec(lmp, "sh", ShearVector::NOUT);
+  const auto c = cvec(lmp, "net");
+  EXPECT_GT(f[ShearVector::P0], 0.0);
+  EXPECT_EQ(c[NetVector::RU], 1.0 - c[NetVector::PRESS] / f[ShearVector::P0]);
+  lmp.cmd("run 100 post no");
+  const auto f2 = fvec(lmp, "sh", ShearVector::NOUT);
+  const auto c2 = cvec(lmp, "net");
+  EXPECT_EQ(f2[ShearVector::P0], f[ShearVector::P0]);
+  EXPECT_EQ(c2[NetVector::RU], 1.0 - c2[NetVector::PRESS] / f[ShearVector::P0]);
+}
+
 TEST_F(Shear, GluedLayerMovesWithTheWall)
 {
   Lammps lmp;
   // the layer: spheres with centres within 1.2 mm of the top wall, not
   // integrated by fix nve/sphere
   const double p = read(lmp, "");
-  const double zcut = wallv(lmp)[HI_Z] - 1.2e-3;
+  const double zcut = wallv(lmp)[WallVector::HI_Z] - 1.2e-3;
   const std::string log = workfile("shear_glue.log");
   lmp.cmds({"variable top atom z>" + fmt_double(zcut), "group glue variable top",
             "group mobile subtract all glue", "fix nve mobile nve/sphere",
@@ -360,16 +369,16 @@ TEST_F(Shear, GluedLayerMovesWithTheWall)
 
   const auto x0 = lmp.gather3("x");
   const double lx = lmp.thermo("lx");
-  const double xw0 = shear(lmp)[XWALL];
+  const double xw0 = shear(lmp)[ShearVector::XWALL];
   double errx = 0.0;
   int nrev = 0;
   for (int chunk = 0; chunk < 150; chunk++) {
     lmp.cmd("run " + std::to_string(EVERY) + " post no");
     const auto s = shear(lmp);
-    nrev = (int) s[REVERSALS];
+    nrev = (int) s[ShearVector::REVERSALS];
     const auto x = lmp.gather3("x"), v = lmp.gather3("v"), w = lmp.gather3("omega");
     lammps_gather_atoms(lmp.handle, (char *) "image", 0, 1, image.data());
-    const double dxw = s[XWALL] - xw0;
+    const double dxw = s[ShearVector::XWALL] - xw0;
     for (int i = 0; i < n; i++) {
       if (g[i] < 0.5) continue;
       const int ix0 = (image0[i] & 1023) - 512, ix = (image[i] & 1023) - 512;
@@ -377,7 +386,7 @@ TEST_F(Shear, GluedLayerMovesWithTheWall)
       errx = std::max(errx, std::fabs(ux - dxw));
       ASSERT_EQ(x[3 * i + 1], x0[3 * i + 1]);
       ASSERT_EQ(x[3 * i + 2], x0[3 * i + 2]);
-      ASSERT_EQ(v[3 * i], s[DIRECTION] * VX);
+      ASSERT_EQ(v[3 * i], s[ShearVector::DIRECTION] * VX);
       ASSERT_EQ(v[3 * i + 1], 0.0);
       ASSERT_EQ(v[3 * i + 2], 0.0);
       ASSERT_EQ(w[3 * i], 0.0);
@@ -402,8 +411,9 @@ TEST_F(Shear, StopCyclesAndHalt)
       lmp.cmd("run " + std::to_string(EVERY) + " post no");
       const auto s = shear(lmp);
       // N reaches 1 at the first zero-crossing of tau after reversal 2
-      const bool one = s[REVERSALS] >= 3 || (s[REVERSALS] == 2 && s[N_EVENT] == 1.0);
-      ASSERT_EQ(s[DONE], one ? 1.0 : 0.0) << step(lmp);
+      const bool one = s[ShearVector::REVERSALS] >= 3 ||
+          (s[ShearVector::REVERSALS] == 2 && s[ShearVector::N_EVENT] == 1.0);
+      ASSERT_EQ(s[ShearVector::DONE], one ? 1.0 : 0.0) << step(lmp);
       if (one) stop_step = step(lmp);
     }
   }
@@ -417,10 +427,10 @@ TEST_F(Shear, StopCyclesAndHalt)
   printf("[ measured ] N = 1 (done) at step %ld, %ld steps of shear\n", stop_step,
          stop_step - start);
   EXPECT_EQ(step(lmp), stop_step);
-  EXPECT_EQ(shear(lmp)[REVERSALS], 2.0);
-  EXPECT_EQ(shear(lmp)[N_EVENT], 1.0);
-  EXPECT_EQ(shear(lmp)[EVENT], 2.0);
-  EXPECT_EQ(shear(lmp)[DONE], 1.0);
+  EXPECT_EQ(shear(lmp)[ShearVector::REVERSALS], 2.0);
+  EXPECT_EQ(shear(lmp)[ShearVector::N_EVENT], 1.0);
+  EXPECT_EQ(shear(lmp)[ShearVector::EVENT], 2.0);
+  EXPECT_EQ(shear(lmp)[ShearVector::DONE], 1.0);
 }
 
 // reversal steps from a fix print file (lines "step reversals"): the steps
@@ -489,7 +499,7 @@ TEST_F(Shear, RestartContinuesTheProtocol)
       const double p = read(lmp);
       shear_run_with_record(lmp, p, f1, true);
       lmp.cmds({"run " + std::to_string(split), "write_restart " + mid});
-      rev_mid = shear(lmp)[REVERSALS];
+      rev_mid = shear(lmp)[ShearVector::REVERSALS];
       lmp.cmds({"run " + std::to_string(S - split), "unfix rec"});
       ra2 = reversal_steps(f1);
       xa2 = lmp.gather3("x");
@@ -500,9 +510,10 @@ TEST_F(Shear, RestartContinuesTheProtocol)
     // the same fix command, with the same ID (tau_amp from the old p0),
     // before the first run: that run's init drops unclaimed restart state
     read(lmp, "fix nve all nve/sphere", mid,
-         "fix sh all grflow/shear w net " + fmt_double(VX) + " " + fmt_double(0.3 * sa[P0]) +
-             " every " + std::to_string(EVERY) + " liquefaction 0.002");
-    EXPECT_EQ(shear(lmp)[REVERSALS], rev_mid);
+         "fix sh all grflow/shear w net " + fmt_double(VX) + " " +
+             fmt_double(0.3 * sa[ShearVector::P0]) + " every " + std::to_string(EVERY) +
+             " liquefaction 0.002");
+    EXPECT_EQ(shear(lmp)[ShearVector::REVERSALS], rev_mid);
     shear_run_with_record(lmp, 0.0, f2, false);
     lmp.cmd("run " + std::to_string(S - split));
     lmp.cmd("unfix rec");
@@ -515,11 +526,12 @@ TEST_F(Shear, RestartContinuesTheProtocol)
     EXPECT_EQ(ra2, ra) << "split at " << split;
     EXPECT_EQ(rb, ra) << "split at " << split;
     const auto sb = shear(lmp);
-    for (int k : {DIRECTION, REVERSALS, XWALL, P0, STEP_IL, N_IL, N_EVENT}) {
+    for (int k : {ShearVector::DIRECTION, ShearVector::REVERSALS, ShearVector::XWALL,
+                  ShearVector::P0, ShearVector::STEP_IL, ShearVector::N_IL, ShearVector::N_EVENT}) {
       EXPECT_EQ(sb[k], sa[k]) << "entry " << k + 1 << " split " << split;
       EXPECT_EQ(sa2[k], sa[k]) << "entry " << k + 1 << " split " << split;
     }
-    EXPECT_DOUBLE_EQ(sb[TIME_IL], sa[TIME_IL]);
+    EXPECT_DOUBLE_EQ(sb[ShearVector::TIME_IL], sa[ShearVector::TIME_IL]);
     const auto xb = lmp.gather3("x"), wb = lmp.gather3("omega");
     const double dx = max_rel_diff(xb, xa2), dw = max_rel_diff(wb, wa2);
     measured("restart B vs split A2: x rel diff (split " + tag + ")", dx);
@@ -599,9 +611,9 @@ TEST_F(Shear, ShortRunsDecideOnlyEveryN)
   ASSERT_GE(ra.size(), 3u);
   for (long st : ra) EXPECT_EQ(st % 100, 0) << st;
   EXPECT_EQ(rb, ra);
-  EXPECT_EQ(sb[REVERSALS], sa[REVERSALS]);
-  EXPECT_EQ(sb[DIRECTION], sa[DIRECTION]);
-  EXPECT_NEAR(sb[XWALL], sa[XWALL], 1.0e-18);
+  EXPECT_EQ(sb[ShearVector::REVERSALS], sa[ShearVector::REVERSALS]);
+  EXPECT_EQ(sb[ShearVector::DIRECTION], sa[ShearVector::DIRECTION]);
+  EXPECT_NEAR(sb[ShearVector::XWALL], sa[ShearVector::XWALL], 1.0e-18);
 }
 
 // ---------------------------------------------------------------------------

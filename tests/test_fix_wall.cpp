@@ -45,13 +45,10 @@ namespace {
 
 const double KN = 1.0e6, CN = 1.15;
 
-// documented vector layout of the fix, 0-based: per wall Fx Fy Fz z dx dy
-enum { LO_FX, LO_FY, LO_FZ, LO_Z, LO_DX, LO_DY, HI_FX, HI_FY, HI_FZ, HI_Z, HI_DX, HI_DY, NVEC };
-
 // global vector of a fix
 std::vector<double> fvec(Lammps &lmp, const char *id)
 {
-  return lmp.fix_vector(id, NVEC);
+  return lmp.fix_vector(id, WallVector::NVECTOR);
 }
 
 // global vector of a compute
@@ -325,12 +322,14 @@ TEST_P(OneSphere, PressedOnWall)
            f[2] / (sign * KN * delta) - 1.0);
   for (int k = 0; k < 3; k++) EXPECT_EQ(t[k], 0.0) << k;
   // the force on the wall is minus the force on the atom; the other wall has none
-  const int mine = iw == 0 ? LO_FX : HI_FX, other = iw == 0 ? HI_FX : LO_FX;
+  const int mine = iw == 0 ? WallVector::LO_FX : WallVector::HI_FX,
+            other = iw == 0 ? WallVector::HI_FX : WallVector::LO_FX;
   EXPECT_EQ(slice(w, mine, 3), negated(f));
   EXPECT_EQ(slice(w, other, 3), std::vector<double>(3, 0.0));
-  EXPECT_EQ(w[LO_Z], zlo);
-  EXPECT_EQ(w[HI_Z], zhi);
-  for (int k : {LO_DX, LO_DY, HI_DX, HI_DY}) EXPECT_EQ(w[k], 0.0);
+  EXPECT_EQ(w[WallVector::LO_Z], zlo);
+  EXPECT_EQ(w[WallVector::HI_Z], zhi);
+  for (int k : {WallVector::LO_DX, WallVector::LO_DY, WallVector::HI_DX, WallVector::HI_DY})
+    EXPECT_EQ(w[k], 0.0);
   // virial: branch (a - delta/2) n from the contact point to the centre
   auto pf = cvec(lmp, "pf");
   EXPECT_NEAR(pf[2] * vol, arm * KN * delta, 1.0e-12 * arm * KN * delta);
@@ -450,12 +449,12 @@ TEST(FixWallOutput, ForcesExtensivePositionsIntensive)
   auto last = [&](int k) {
     return *(double *) lammps_last_thermo(lmp.handle, "data", k);
   };
-  EXPECT_DOUBLE_EQ(last(1), w[LO_FZ] / 2.0);
+  EXPECT_DOUBLE_EQ(last(1), w[WallVector::LO_FZ] / 2.0);
   EXPECT_EQ(last(2), 1.0e-3);
   EXPECT_EQ(last(3), 9.0e-3);
-  EXPECT_EQ(last(4), w[HI_DX]);
-  EXPECT_EQ(last(5), w[HI_DY]);
-  EXPECT_GT(w[HI_DX], 0.0);
+  EXPECT_EQ(last(4), w[WallVector::HI_DX]);
+  EXPECT_EQ(last(5), w[WallVector::HI_DY]);
+  EXPECT_GT(w[WallVector::HI_DX], 0.0);
 }
 
 TEST(FixWallNetwork, WallContactsInComputeNetwork)
@@ -463,10 +462,6 @@ TEST(FixWallNetwork, WallContactsInComputeNetwork)
   // A between the walls (overlaps 1e-5 below, 2e-5 above), B on the lo wall
   // sliding slowly in x (overlap 3e-5), C floating.  The wall contacts count
   // for the particle inside: arm (a - delta/2) n (x) f, one contact, n n = e_z e_z
-  // clang-format off
-  enum { SXX, SZZ = 2, SXZ = 4, PRESS = 6, TAU = 7, NP = 11, NFLOAT = 12, NCONTACT = 13, ZG = 14,
-         AC = 16, AXX = 18, AZZ = 20, VOLUME = 24, PC0 = 25 };
-  // clang-format on
 
   const double aA = 0.5e-3, aB = 0.3e-3, aC = 0.4e-3;
   const double dA1 = 1.0e-5, dA2 = 2.0e-5, dB = 3.0e-5, vB = 0.1;
@@ -493,36 +488,36 @@ TEST(FixWallNetwork, WallContactsInComputeNetwork)
   const double A = 0.01 * 0.01, V = A * zhi;
 
   auto v = cvec(lmp, "net");
-  EXPECT_NEAR(v[VOLUME], V, 1.0e-15 * V);
+  EXPECT_NEAR(v[NetVector::VOLUME], V, 1.0e-15 * V);
   EXPECT_LT(measured("network with walls: sigma_zz vs sum (a - delta/2) kn delta / V",
-                     fabs(v[SZZ] - (wA + wB) / V) / v[SZZ]),
+                     fabs(v[NetVector::SZZ] - (wA + wB) / V) / v[NetVector::SZZ]),
             1.0e-12);
-  EXPECT_EQ(v[SXX], 0.0);
+  EXPECT_EQ(v[NetVector::SXX], 0.0);
   // the wall contact's branch is along z: sigma_zx = l f_x, sigma_xz = 0;
   // tau uses the symmetric part, like the fix virial
-  EXPECT_EQ(v[SXZ], 0.0);
-  EXPECT_NEAR(v[TAU], -0.5 * (aB - d3 / 2) * fxB / V, 1.0e-12 * fabs(v[TAU]));
-  EXPECT_NE(v[TAU], 0.0);
-  EXPECT_EQ(v[NP], 3.0);
-  EXPECT_EQ(v[NFLOAT], 1.0);
-  EXPECT_EQ(v[NCONTACT], 1.5);
-  EXPECT_EQ(v[ZG], 1.5);
-  EXPECT_DOUBLE_EQ(v[PC0 + 0], 1.0 / 3.0);
-  EXPECT_DOUBLE_EQ(v[PC0 + 1], 1.0 / 3.0);
-  EXPECT_DOUBLE_EQ(v[PC0 + 2], 1.0 / 3.0);
-  EXPECT_DOUBLE_EQ(v[AZZ], 5.0);
-  EXPECT_DOUBLE_EQ(v[AXX], -2.5);
-  EXPECT_DOUBLE_EQ(v[AC], 7.5);
+  EXPECT_EQ(v[NetVector::SXZ], 0.0);
+  EXPECT_NEAR(v[NetVector::TAU], -0.5 * (aB - d3 / 2) * fxB / V, 1.0e-12 * fabs(v[NetVector::TAU]));
+  EXPECT_NE(v[NetVector::TAU], 0.0);
+  EXPECT_EQ(v[NetVector::NP], 3.0);
+  EXPECT_EQ(v[NetVector::NFLOAT], 1.0);
+  EXPECT_EQ(v[NetVector::NCONTACT], 1.5);
+  EXPECT_EQ(v[NetVector::ZG], 1.5);
+  EXPECT_DOUBLE_EQ(v[NetVector::PC0 + 0], 1.0 / 3.0);
+  EXPECT_DOUBLE_EQ(v[NetVector::PC0 + 1], 1.0 / 3.0);
+  EXPECT_DOUBLE_EQ(v[NetVector::PC0 + 2], 1.0 / 3.0);
+  EXPECT_DOUBLE_EQ(v[NetVector::AZZ], 5.0);
+  EXPECT_DOUBLE_EQ(v[NetVector::AXX], -2.5);
+  EXPECT_DOUBLE_EQ(v[NetVector::AC], 7.5);
 
   // only A (region), only B and C (group)
   const auto l = cvec(lmp, "left");
-  EXPECT_EQ(l[NP], 1.0);
-  EXPECT_EQ(l[NCONTACT], 1.0);
-  EXPECT_NEAR(l[SZZ] * l[VOLUME], wA, 1.0e-12 * wA);
+  EXPECT_EQ(l[NetVector::NP], 1.0);
+  EXPECT_EQ(l[NetVector::NCONTACT], 1.0);
+  EXPECT_NEAR(l[NetVector::SZZ] * l[NetVector::VOLUME], wA, 1.0e-12 * wA);
   const auto r = cvec(lmp, "right");
-  EXPECT_EQ(r[NP], 2.0);
-  EXPECT_EQ(r[NCONTACT], 0.5);
-  EXPECT_NEAR(r[SZZ] * r[VOLUME], wB, 1.0e-12 * wB);
+  EXPECT_EQ(r[NetVector::NP], 2.0);
+  EXPECT_EQ(r[NetVector::NCONTACT], 0.5);
+  EXPECT_NEAR(r[NetVector::SZZ] * r[NetVector::VOLUME], wB, 1.0e-12 * wB);
   // the same forces in the virial
   EXPECT_NEAR(cvec(lmp, "pf")[2] * lmp.thermo("vol"), wA + wB, 1.0e-12 * (wA + wB));
 }
@@ -589,10 +584,11 @@ TEST_P(SlidingOnWalls, FollowsKernel)
   const std::vector<double> want = {
       ref.wall[0].force[0], ref.wall[0].force[1], ref.wall[0].force[2], ref.wall[0].z, 0.0, 0.0,
       ref.wall[1].force[0], ref.wall[1].force[1], ref.wall[1].force[2], ref.wall[1].z, 0.0, 0.0};
-  for (int k : {LO_FX, LO_FY, LO_FZ, HI_FX, HI_FY, HI_FZ, LO_Z, HI_Z})
+  for (int k : {WallVector::LO_FX, WallVector::LO_FY, WallVector::LO_FZ, WallVector::HI_FX,
+                WallVector::HI_FY, WallVector::HI_FZ, WallVector::LO_Z, WallVector::HI_Z})
     EXPECT_NEAR(w[k], want[k], 1.0e-12 * std::max(1.0, fabs(want[k]))) << k;
-  EXPECT_NEAR(w[LO_DX], nsteps * dt * vlo[0], 1.0e-15);
-  EXPECT_NEAR(w[HI_DY], nsteps * dt * vhi[1], 1.0e-15);
+  EXPECT_NEAR(w[WallVector::LO_DX], nsteps * dt * vlo[0], 1.0e-15);
+  EXPECT_NEAR(w[WallVector::HI_DY], nsteps * dt * vhi[1], 1.0e-15);
   // every cap was reached on both walls, and B left the lo wall
   for (int iw = 0; iw < 2; iw++) {
     EXPECT_TRUE(ref.slid[iw]) << iw;
@@ -795,38 +791,39 @@ TEST(FixWallMoving, WallsMoveByVelocityTimesTime)
   };
   advance(1000, true);
   auto w = fvec(lmp, "w");
-  EXPECT_EQ(w[LO_Z], zlo);
-  EXPECT_EQ(w[HI_Z], zhi);
-  EXPECT_EQ(w[LO_DX], d[0][0]);
-  EXPECT_EQ(w[LO_DY], d[0][1]);
-  EXPECT_EQ(w[HI_DX], d[1][0]);
-  EXPECT_EQ(w[HI_DY], d[1][1]);
+  EXPECT_EQ(w[WallVector::LO_Z], zlo);
+  EXPECT_EQ(w[WallVector::HI_Z], zhi);
+  EXPECT_EQ(w[WallVector::LO_DX], d[0][0]);
+  EXPECT_EQ(w[WallVector::LO_DY], d[0][1]);
+  EXPECT_EQ(w[WallVector::HI_DX], d[1][0]);
+  EXPECT_EQ(w[WallVector::HI_DY], d[1][1]);
   const double t = 1000 * dt;
   const std::vector<double> vt = {1.0e-3 + vlo[2] * t, vlo[0] * t, vlo[1] * t,
                                   9.0e-3 + vhi[2] * t, vhi[0] * t, vhi[1] * t};
-  const std::vector<double> got = {w[LO_Z], w[LO_DX], w[LO_DY], w[HI_Z], w[HI_DX], w[HI_DY]};
+  const std::vector<double> got = {w[WallVector::LO_Z], w[WallVector::LO_DX], w[WallVector::LO_DY],
+                                   w[WallVector::HI_Z], w[WallVector::HI_DX], w[WallVector::HI_DY]};
   EXPECT_LT(measured("wall positions vs z0 + v t after 1000 steps", max_rel_diff(got, vt)),
             1.0e-13);
 
   // run 0 does not move them; a new time step is used from the next run
   lmp.cmd("run 0");
-  EXPECT_EQ(fvec(lmp, "w")[HI_Z], zhi);
+  EXPECT_EQ(fvec(lmp, "w")[WallVector::HI_Z], zhi);
   dt = 2.0e-6;
   lmp.cmds({"timestep " + fmt_double(dt), "run 500"});
   advance(500, true);
   w = fvec(lmp, "w");
-  EXPECT_EQ(w[LO_Z], zlo);
-  EXPECT_EQ(w[HI_DX], d[1][0]);
+  EXPECT_EQ(w[WallVector::LO_Z], zlo);
+  EXPECT_EQ(w[WallVector::HI_DX], d[1][0]);
 
   // fix_modify z places a wall; displacements stay; vel 0 stops it
   lmp.cmds({"fix_modify w wall hi z 8.0e-3 wall hi vel 0 0 0", "run 100"});
   advance(100, false);
   w = fvec(lmp, "w");
-  EXPECT_EQ(w[HI_Z], 8.0e-3);
-  EXPECT_EQ(w[HI_DX], d[1][0]);
-  EXPECT_EQ(w[HI_DY], d[1][1]);
-  EXPECT_EQ(w[LO_Z], zlo);
-  EXPECT_EQ(w[LO_DY], d[0][1]);
+  EXPECT_EQ(w[WallVector::HI_Z], 8.0e-3);
+  EXPECT_EQ(w[WallVector::HI_DX], d[1][0]);
+  EXPECT_EQ(w[WallVector::HI_DY], d[1][1]);
+  EXPECT_EQ(w[WallVector::LO_Z], zlo);
+  EXPECT_EQ(w[WallVector::LO_DY], d[0][1]);
 }
 
 TEST(FixWallMoving, WallDragsSphereByFriction)
@@ -840,7 +837,7 @@ TEST(FixWallMoving, WallDragsSphereByFriction)
   add_ball(lmp, {{5.0e-3, 5.0e-3, a - 1.0e-6}, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, a});
   lmp.cmds({"fix w all grflow/wall 1.0e6 1.15 zlo 0.0", "fix load all addforce 0.0 0.0 -1.0",
             "fix nve all nve/sphere", "timestep " + fmt_double(dt), "run 2000"});
-  EXPECT_NEAR(fvec(lmp, "w")[LO_FZ], -1.0, 1.0e-3);    // settled on the wall
+  EXPECT_NEAR(fvec(lmp, "w")[WallVector::LO_FZ], -1.0, 1.0e-3);    // settled on the wall
   const double x0 = lmp.gather3("x")[0];
 
   const int nsteps = 4000;
@@ -924,7 +921,8 @@ TEST_F(WallPacking, PressureAndNetworkStressMatchWallForces)
             "thermo_style custom step ke c_pv[3] c_pp[3] c_pf[3] c_cs c_fab[1] c_sas[3]", "run 0"});
   const auto w = fvec(lmp, "w");
   const double vol = lmp.thermo("vol"), lx = lmp.thermo("lx"), ly = lmp.thermo("ly");
-  const double flo = w[LO_FZ], fhi = w[HI_FZ], zlo = w[LO_Z], zhi = w[HI_Z];
+  const double flo = w[WallVector::LO_FZ], fhi = w[WallVector::HI_FZ], zlo = w[WallVector::LO_Z],
+               zhi = w[WallVector::HI_Z];
   ASSERT_EQ(zlo, 0.0);
   ASSERT_LT(zhi, 8.0e-3);
   measured("packing: kinetic energy (J)", lmp.thermo("ke"));
@@ -999,16 +997,18 @@ TEST_F(WallPacking, PressureAndNetworkStressMatchWallForces)
 
   // compute grflow/network between the walls: sigma_zz A = |F| on each wall
   const auto net = cvec(lmp, "net");
-  enum { SZZ = 2, NP = 11, NCONTACT = 13, AZZ = 20, AXX = 18, VOLUME = 24 };
-  EXPECT_NEAR(net[VOLUME], lx * ly * (zhi - zlo), 1.0e-14 * net[VOLUME]);
-  EXPECT_EQ(net[NP], lmp.natoms());
+  EXPECT_NEAR(net[NetVector::VOLUME], lx * ly * (zhi - zlo), 1.0e-14 * net[NetVector::VOLUME]);
+  EXPECT_EQ(net[NetVector::NP], lmp.natoms());
   const double A = lx * ly;
   // sigma_zz A = W / h (checked exactly below): the same bound
-  EXPECT_LT(measured("packing: sigma_zz A / F_hi - 1", fabs(net[SZZ] * A / fhi - 1.0)), bound);
-  EXPECT_LT(measured("packing: sigma_zz A / |F_lo| - 1", fabs(net[SZZ] * A / -flo - 1.0)),
-            bound * fhi / -flo + fabs(flo + fhi) / -flo);
+  EXPECT_LT(measured("packing: sigma_zz A / F_hi - 1", fabs(net[NetVector::SZZ] * A / fhi - 1.0)),
+            bound);
+  EXPECT_LT(
+      measured("packing: sigma_zz A / |F_lo| - 1", fabs(net[NetVector::SZZ] * A / -flo - 1.0)),
+      bound * fhi / -flo + fabs(flo + fhi) / -flo);
   // and it is the virial of the same forces, pair and walls
-  EXPECT_LT(measured("packing: sigma_zz V_net vs P_zz V_box", fabs(net[SZZ] * net[VOLUME] - W) / W),
+  EXPECT_LT(measured("packing: sigma_zz V_net vs P_zz V_box",
+                     fabs(net[NetVector::SZZ] * net[NetVector::VOLUME] - W) / W),
             1.0e-12);
   // without the wall contacts it would be far off
   EXPECT_GT((pp[2] * vol) / W, 0.0);
@@ -1016,12 +1016,12 @@ TEST_F(WallPacking, PressureAndNetworkStressMatchWallForces)
 
   // contacts: the pairs that touch (all loaded, at rest) and the wall contacts
   const double pairs = cscalar(lmp, "cs") / 2.0;
-  EXPECT_EQ(net[NCONTACT], pairs + 0.5 * nwall);
+  EXPECT_EQ(net[NetVector::NCONTACT], pairs + 0.5 * nwall);
   // fabric: pair ends from compute fabric (a = 15/2 dev <nn>), wall ends n = e_z
   const auto fab = cvec(lmp, "fab");
   const double ends = 2.0 * pairs + nwall;
-  EXPECT_NEAR(net[AZZ], (2.0 * pairs * fab[2] + nwall * 5.0) / ends, 1.0e-12);
-  EXPECT_NEAR(net[AXX], (2.0 * pairs * fab[0] - nwall * 2.5) / ends, 1.0e-12);
+  EXPECT_NEAR(net[NetVector::AZZ], (2.0 * pairs * fab[2] + nwall * 5.0) / ends, 1.0e-12);
+  EXPECT_NEAR(net[NetVector::AXX], (2.0 * pairs * fab[0] - nwall * 2.5) / ends, 1.0e-12);
 }
 
 TEST_F(WallPacking, RestartContinuesTrajectory)
@@ -1037,15 +1037,15 @@ TEST_F(WallPacking, RestartContinuesTrajectory)
     lmp.cmds(shear);
     lmp.cmds({"run 1000"});
     const auto w = fvec(lmp, "w");
-    zhi_mid = w[HI_Z];
-    dx_mid = w[HI_DX];
-    dy_mid = w[HI_DY];
+    zhi_mid = w[WallVector::HI_Z];
+    dx_mid = w[WallVector::HI_DX];
+    dy_mid = w[WallVector::HI_DY];
     lmp.cmds({"write_restart " + file, "run 1000"});
     want_x = lmp.gather3("x");
     want_w = lmp.gather3("omega");
     want_wall = fvec(lmp, "w");
   }
-  EXPECT_GT(fabs(want_wall[HI_FX]), 0.01);    // the top wall really shears
+  EXPECT_GT(fabs(want_wall[WallVector::HI_FX]), 0.01);    // the top wall really shears
 
   // read_restart and the same fix command: walls and histories restored
   {
@@ -1054,15 +1054,15 @@ TEST_F(WallPacking, RestartContinuesTrajectory)
               "neigh_modify delay 0 every 1 check yes",
               "fix w all grflow/wall 1.0e6 1.15 zlo 0.0 zhi 8.0e-3", "fix nve all nve/sphere"});
     const auto w0 = fvec(lmp, "w");
-    EXPECT_EQ(w0[HI_Z], zhi_mid);
-    EXPECT_EQ(w0[HI_DX], dx_mid);
-    EXPECT_EQ(w0[HI_DY], dy_mid);
+    EXPECT_EQ(w0[WallVector::HI_Z], zhi_mid);
+    EXPECT_EQ(w0[WallVector::HI_DX], dx_mid);
+    EXPECT_EQ(w0[WallVector::HI_DY], dy_mid);
     lmp.cmd("run 1000");
     EXPECT_LT(measured("wall restart x", max_rel_diff(lmp.gather3("x"), want_x)), 1.0e-13);
     EXPECT_LT(measured("wall restart omega", max_rel_diff(lmp.gather3("omega"), want_w)), 1.0e-11);
     const auto w = fvec(lmp, "w");
     EXPECT_LT(measured("wall restart wall vector", max_rel_diff(w, want_wall)), 1.0e-10);
-    EXPECT_EQ(w[HI_Z], want_wall[HI_Z]);
+    EXPECT_EQ(w[WallVector::HI_Z], want_wall[WallVector::HI_Z]);
   }
 
   // the same walls (position and velocity set by hand) without the per-atom
@@ -1074,7 +1074,7 @@ TEST_F(WallPacking, RestartContinuesTrajectory)
               "fix other all grflow/wall 1.0e6 1.15 zlo 0.0 zhi " + fmt_double(zhi_mid),
               "fix_modify other wall hi vel 0.05 -0.02 -0.002", "fix nve all nve/sphere",
               "run 1000"});
-    EXPECT_EQ(fvec(lmp, "other")[HI_Z], want_wall[HI_Z]);
+    EXPECT_EQ(fvec(lmp, "other")[WallVector::HI_Z], want_wall[WallVector::HI_Z]);
     EXPECT_GT(measured("wall restart without wall history: omega",
                        max_rel_diff(lmp.gather3("omega"), want_w)),
               1.0e-6);
@@ -1165,7 +1165,7 @@ TEST(FixWallNearList, SameTrajectoryAsTheFullPass)
   EXPECT_GT(measured("near list: mean wall normal force (N)", near.fz), 0.0);
   EXPECT_EQ(near.fz, full.fz);
   // the top wall came down 1 mm, 20 times skin/2
-  EXPECT_NEAR(near.wall[HI_Z], 8.0e-3, 1.0e-9);
+  EXPECT_NEAR(near.wall[WallVector::HI_Z], 8.0e-3, 1.0e-9);
 }
 
 // ---------------------------------------------------------------------------

@@ -31,6 +31,20 @@ namespace LAMMPS_NS {
 // NWALL, Wall) are GRFLOW::FlatWalls, shared with LIGGGHTS
 class FixGRFLOWWall : public Fix, public GRFLOW::FlatWalls {
  public:
+  // the positions of the output vector (0-based, NVECTOR of them): the
+  // entries GRFLOW::FlatWalls::VEC_FX ... VEC_DY of the lower wall, then
+  // of the upper one
+  // clang-format off
+  enum {
+    LO_FX = LO * VEC_PER_WALL + VEC_FX, LO_FY = LO * VEC_PER_WALL + VEC_FY,
+    LO_FZ = LO * VEC_PER_WALL + VEC_FZ, LO_Z = LO * VEC_PER_WALL + VEC_Z,
+    LO_DX = LO * VEC_PER_WALL + VEC_DX, LO_DY = LO * VEC_PER_WALL + VEC_DY,
+    HI_FX = HI * VEC_PER_WALL + VEC_FX, HI_FY = HI * VEC_PER_WALL + VEC_FY,
+    HI_FZ = HI * VEC_PER_WALL + VEC_FZ, HI_Z = HI * VEC_PER_WALL + VEC_Z,
+    HI_DX = HI * VEC_PER_WALL + VEC_DX, HI_DY = HI * VEC_PER_WALL + VEC_DY
+  };
+  // clang-format on
+
   FixGRFLOWWall(class LAMMPS *, int, char **);
   ~FixGRFLOWWall() override;
   int setmask() override;
