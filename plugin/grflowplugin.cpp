@@ -14,7 +14,7 @@
 /* ----------------------------------------------------------------------
    Plugin entry point: registers the GRFLOW styles (pair granular/grflow,
    compute grflow/network, fix grflow/wall, fix grflow/shear,
-   fix grflow/compress) with a PLUGIN-enabled
+   fix grflow/compress, fix grflow/checksum) with a PLUGIN-enabled
    LAMMPS 4Feb2025 built with the same MPI, LAMMPS_SIZES and compiler.
      plugin load grflowplugin.so
 ------------------------------------------------------------------------- */
@@ -23,6 +23,7 @@
 #include "version.h"
 
 #include "compute_grflow_network.h"
+#include "fix_grflow_checksum.h"
 #include "fix_grflow_compress.h"
 #include "fix_grflow_shear.h"
 #include "fix_grflow_wall.h"
@@ -48,6 +49,11 @@ static Fix *fix_grflow_wall_creator(LAMMPS *lmp, int argc, char **argv)
 static Fix *fix_grflow_shear_creator(LAMMPS *lmp, int argc, char **argv)
 {
   return new FixGRFLOWShear(lmp, argc, argv);
+}
+
+static Fix *fix_grflow_checksum_creator(LAMMPS *lmp, int argc, char **argv)
+{
+  return new FixGRFLOWChecksum(lmp, argc, argv);
 }
 
 static Fix *fix_grflow_compress_creator(LAMMPS *lmp, int argc, char **argv)
@@ -90,5 +96,10 @@ extern "C" __attribute__((visibility("default"))) void lammpsplugin_init(void *l
   plugin.name = "grflow/compress";
   plugin.info = "GRFLOW isotropic compression of the cell by all six sides, stress servo";
   plugin.creator.v2 = (lammpsplugin_factory2 *) &fix_grflow_compress_creator;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.name = "grflow/checksum";
+  plugin.info = "GRFLOW checksum file next to every restart file, once it is complete";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &fix_grflow_checksum_creator;
   (*register_plugin)(&plugin, lmp);
 }
