@@ -69,7 +69,8 @@ namespace ContactModels {
     };
 
     NormalModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c) :
-        NormalModelBase(lmp, hsetup, c), rolling(true), torsion(true), is_pair(false),
+        NormalModelBase(lmp, hsetup, c), rolling(true), torsion(true), limit_force(true),
+        is_pair(false),
         history_offset(-1), ntypes(0)
     {
       for (int k = 0; k < LAMMPS_NS::GRFLOW::NCOEFF; k++) property[k] = NULL;
@@ -87,6 +88,11 @@ namespace ContactModels {
     {
       settings.registerOnOff("rolling", rolling, true);
       settings.registerOnOff("torsion", torsion, true);
+      // LIGGGHTS's name (model hooke, hertz) for the clipped normal force
+      // f_n = max(k_n delta - c_n v_n, 0); off: the unclipped law of
+      // granular/grflow's normal_force unclipped.  Default on (clipped),
+      // unlike model hooke, as granular/grflow's default
+      settings.registerOnOff("limitForce", limit_force, true);
     }
 
     inline void postSettings(IContactHistorySetup *hsetup, ContactModelBase *cmb)
@@ -191,6 +197,7 @@ namespace ContactModels {
 
    private:
     bool rolling, torsion;
+    bool limit_force;    // clipped normal force (limitForce on)
     bool is_pair;    // of pair_style gran (not of a wall)
     int history_offset;
     double **property[LAMMPS_NS::GRFLOW::NCOEFF];
@@ -229,7 +236,9 @@ namespace ContactModels {
                 << ")";
             error->all(FLERR, msg.str().c_str());
           }
-          pack_coeffs(value, coeff[i * (ntypes + 1) + j]);
+          ContactCoeffs &c = coeff[i * (ntypes + 1) + j];
+          pack_coeffs(value, c);
+          c.normal_law = limit_force ? NORMAL_CLIPPED : NORMAL_UNCLIPPED;
         }
       if (is_pair) {
         LiggghtsPairLaw law = {&coeff, ntypes, history_offset};
