@@ -24,7 +24,9 @@
 #       the file the shear stage starts from: pick OUT DIR shear.restart.
 #       when RESUME is yes, else check OUT DIR/prep.restart
 # OUT is written through OUT.tmp and a rename.  The decks (LAMMPS and
-# LIGGGHTS) run this with shell and include OUT.
+# LIGGGHTS) run this with shell and include OUT; its error ends with
+# ${grflow_quit}, the deck's quit with a non-zero status ("quit 1" in
+# LAMMPS, "quit" in LIGGGHTS 3.8).
 set -eu
 
 die() { echo "restart_files.sh: $*" >&2; exit 1; }
@@ -79,7 +81,7 @@ variable restart_file string $f"
 variable restart_file string $f"
     else
       emit "$out" "print \"ERROR: GRFLOW: restart file $f is not usable ($why); write it again\"
-quit 1"
+\${grflow_quit}"
     fi
     ;;
   pick)
@@ -104,10 +106,10 @@ quit 1"
       emit "$out" "${text}variable restart_file string $chosen"
     elif [ -z "$steps" ]; then
       emit "$out" "print \"ERROR: GRFLOW resume: no restart file $dir/$prefix<step> to resume from; run the stage without -var resume yes\"
-quit 1"
+\${grflow_quit}"
     else
       emit "$out" "${text}print \"ERROR: GRFLOW resume: none of the restart files in $dir verifies (${tried# }); run the stage again without -var resume yes (a file known to be complete can be given its checksum file with: sh restart_files.sh sum FILE)\"
-quit 1"
+\${grflow_quit}"
     fi
     ;;
   shear)

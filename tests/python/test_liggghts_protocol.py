@@ -478,9 +478,8 @@ def test_contact_ratios_reach_particles_and_walls(tmp_path, cache):
     ({"newton_pair": "maybe"}, "newton_pair maybe: use on or off"),
     ({"timing": "maybe"}, "timing maybe: use yes or no"),
     ({"calibrate": "maybe"}, "calibrate maybe: use yes or no"),
-    # a value that is no number: LIGGGHTS's words for LAMMPS's "If command
-    # boolean can only operate on numbers"
-    ({"N": "many"}, "Invalid Boolean syntax in if command"),
+    # a value that is no number: named by params.lmp's check, as in LAMMPS
+    ({"N": "many"}, "ERROR: not a number: N 'many'"),
     # the LIGGGHTS decks' own
     ({"stage": "both"}, "unknown stage both"),
     ({"resume": "yes", "stage": "prep"}, "cannot go with stage prep"),

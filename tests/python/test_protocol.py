@@ -14,6 +14,7 @@ Environment: LMP (lmp binary), GRFLOW_INPUTS (the inputs/ directory).
 """
 
 import json
+import re
 import math
 import os
 import signal
@@ -602,7 +603,8 @@ def test_contact_ratios_reach_particles_and_walls(tmp_path, deck):
     ({"kt_kn": "-0.5"}, "kt must be >= 0, got -500000"),
     ({"N": "0"}, "N 0 must be a whole number >= 1"),
     ({"N": "100.5"}, "N 100.5 must be a whole number >= 1"),
-    ({"N": "many"}, "If command boolean can only operate on numbers"),
+    ({"N": "many"}, "ERROR: not a number: N 'many'"),
+    ({"v_x": "1e-2x", "tau_amp": "25k"}, "not a number: v_x '1e-2x', tau_amp '25k'"),
     ({"d_min": "2e-3", "d_max": "1e-3"}, "need 0 < d_min <= d_max"),
     ({"dt_factor": "0"}, "dt_factor 0 must be > 0"),
     ({"dt_factor_shear": "-0.1"}, "dt_factor_shear -0.1 must be > 0"),
@@ -621,6 +623,22 @@ def test_bad_parameters(tmp_path, var, expect):
     text = proc.stdout + proc.stderr + tail(tmp_path / "bad" / "log.prep.lammps")
     assert proc.returncode != 0
     assert expect in text
+
+
+def test_every_numeric_parameter_is_checked():
+    """params.lmp hands every index variable with a numeric default to
+    check_numbers.sh (which names a -var value that is no number): a new
+    numeric parameter left out of that list fails here."""
+    text = open(os.path.join(INPUTS, "params.lmp")).read()
+    number = re.compile(r"^[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?$")
+    numeric = {m.group(1) for m in re.finditer(r"^variable\s+(\S+)\s+index\s+(\S+)", text, re.M)
+               if number.match(m.group(2))}
+    numeric.add("dt_factor_shear")    # its default is ${dt_factor}
+    call = text[text.index("check_numbers.sh"):text.index("include         ${outdir}/numbers.lmp")]
+    words = call.replace("&", " ").split()[2:]
+    checked = dict(zip(words[0::2], words[1::2]))
+    assert set(checked) == numeric
+    assert all(v == "${" + k + "}" for k, v in checked.items())
 
 
 def test_outdir_with_whitespace(tmp_path):
