@@ -2,24 +2,25 @@
 # The protocol in LAMMPS and in LIGGGHTS over seeds: the quick preset (or
 # any -var settings) with each host's decks (inputs/cyclic_shear.lmp,
 # inputs/liggghts/cyclic_shear.liggghts), the figures and summary of each
-# run (analysis/make_figures.py), and one table of the summaries side by
-# side.  Runs that are complete (figures/summary.json there) are not run
-# again.
+# run (grflow-figures), and one table of the summaries side by side.
+# Runs that are complete (figures/summary.json there) are not run again.
 #
 #   bench/host_agreement.sh OUTDIR "SEEDS" [-var NAME VALUE ...]
 #   e.g. bench/host_agreement.sh runs/hosts "1 2 3" -var preset quick
 #
 # environment: LMP (default build/lmp), LIGGGHTS (default
-# build-liggghts/cmake/liggghts), NP=1 MPI ranks per run, PYTHON (default
-# /usr/bin/python3, which has numpy and matplotlib on Debian).
+# build-liggghts/cmake/liggghts), NP=1 MPI ranks per run.  grflow-figures
+# and grflow-python: on PATH, else in the build tree (bench/commands.sh).
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
+. "$top/bench/commands.sh"
+figures=$(grflow_command grflow-figures)
+python=$(grflow_command grflow-python)
 out=${1:?usage: host_agreement.sh OUTDIR "SEEDS" [-var NAME VALUE ...]}
 seeds=${2:?usage: host_agreement.sh OUTDIR "SEEDS" [-var NAME VALUE ...]}
 shift 2
 lmp=${LMP:-$top/build/lmp}
 liggghts=${LIGGGHTS:-$top/build-liggghts/cmake/liggghts}
-python=${PYTHON:-/usr/bin/python3}
 np=${NP:-1}
 mpi=()
 [ "$np" -gt 1 ] && mpi=(mpirun --allow-run-as-root --oversubscribe -np "$np")
@@ -39,7 +40,7 @@ for s in $seeds; do
     "${cmd[@]}" -log none -screen none -var seed "$s" -var outdir "$dir" "$@" \
       || { echo "$host seed $s: the run failed (logs in $dir)"; continue; }
     echo "$host seed $s: $(( $(date +%s) - start )) s" | tee -a "$out/times.txt"
-    "$python" analysis/make_figures.py "$dir" > "$dir/make_figures.log"
+    "$figures" "$dir" > "$dir/figures.log"
   done
 done
 

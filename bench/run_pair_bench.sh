@@ -12,7 +12,8 @@
 #   ROUNDS=2       interleaved rounds (A B C A B C ...); each style's fastest
 #                  round is reported, which damps the effect of other load
 #   PREP=1         remake the packing even if OUTDIR/packing.data exists
-#   PYTHON=/usr/bin/python3
+# run_pair_bench.py runs on grflow-python: on PATH, else in the build tree
+# (bench/commands.sh)
 #
 # 1. if OUTDIR/packing.data or OUTDIR/packing.vars is missing (or PREP=1),
 #    run in.prep_packing (a few minutes) to make the dense sheared packing
@@ -25,6 +26,8 @@ set -euo pipefail
 
 BENCH="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 REPO="$(cd "$BENCH/.." && pwd)"
+. "$BENCH/commands.sh"
+PYTHON=$(grflow_command grflow-python)
 
 LMP="${1:-$REPO/build/lmp}"
 OUTDIR="${2:-$REPO/build/bench}"
@@ -33,7 +36,6 @@ NWARM="${NWARM:-1000}"
 ROUNDS="${ROUNDS:-2}"
 styles=()
 for ((k = 0; k < ROUNDS; k++)); do styles+=(grflow granular gran_hooke_history); done
-PYTHON="${PYTHON:-/usr/bin/python3}"
 
 if [ ! -x "$LMP" ]; then
   echo "run_pair_bench.sh: LAMMPS binary $LMP not found or not executable" >&2

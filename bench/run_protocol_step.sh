@@ -13,6 +13,9 @@
 #         "grflow stock" also runs the same deck with stock pair granular,
 #         -var pair stock, from the same sample: its contact springs start
 #         unstretched, as the restart file holds granular/grflow's history)
+#   VARS  extra lmp arguments for every run, the preparation included
+#         (e.g. VARS="-var preset quick -var N 100": they are not in
+#         restart files, so give a PREP's own settings again)
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 cd "$top"
@@ -23,7 +26,8 @@ prep=${PREP:-$out/paper/prep.restart}
 if [ ! -f "$prep" ]; then
   echo "making the paper case's prepared sample in $out/paper (stage prep, 1 core)"
   mkdir -p "$out/paper"
-  "$lmp" -in inputs/cyclic_shear.lmp -var stage prep -var outdir "$out/paper" \
+  # shellcheck disable=SC2086
+  "$lmp" -in inputs/cyclic_shear.lmp -var stage prep -var outdir "$out/paper" ${VARS:-} \
     -log "$out/paper/log.driver.lammps" -screen none
   prep=$out/paper/prep.restart
 fi
@@ -35,7 +39,8 @@ for np in 1 2; do
   cmd=("$lmp")
   if [ "$np" -gt 1 ]; then cmd=(mpirun --allow-run-as-root --oversubscribe -np "$np" "$lmp"); fi
   start=$(date +%s.%N)
-  "${cmd[@]}" -in inputs/cyclic_shear.lmp -var stage shear -var outdir "$run" -var pair "$pair" \
+  # shellcheck disable=SC2086
+  "${cmd[@]}" -in inputs/cyclic_shear.lmp -var stage shear -var outdir "$run" -var pair "$pair" ${VARS:-} \
     -var max_steps "$nsteps" -log "$run/log.driver.lammps" -screen none
   end=$(date +%s.%N)
   # the stage's run is split into segments at every event: sum their loop times

@@ -16,8 +16,12 @@
 # Environment: LMP (default build/lmp), INPUTS (default inputs/), OUT
 # (scratch, default build/bench/ab), VARS (-var settings of the run that
 # wrote RESTART, added to every variant: they are not in restart files).
+# profile_shear.py runs on grflow-python: on PATH, else in the build tree
+# (bench/commands.sh).
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
+. "$top/bench/commands.sh"
+python=$(grflow_command grflow-python)
 restart=$(realpath "${1:?usage: shear_ab.sh RESTART NSTEPS ROUNDS VARIANT ...}")
 nsteps=${2:?NSTEPS}
 rounds=${3:?ROUNDS}
@@ -47,7 +51,7 @@ for round in $(seq 1 "$rounds"); do
       -var inputs "$inputs" -var stage shear -var resume "$resume" -var outdir "$dir" \
       -var max_steps $((k + nsteps)) -var timing yes ${VARS:-} $args \
       -log "$dir/log.driver.lammps" -screen none
-    /usr/bin/python3 "$top/bench/profile_shear.py" "$dir/log.shear.lammps" --whole \
+    "$python" "$top/bench/profile_shear.py" "$dir/log.shear.lammps" --whole \
       | awk -v r="$round" -v n="$name" '/^# all:/ {print "round " r " " n ": " $0}
                                         /^\| (Pair|Neigh|Comm|Output|Modify|Other|total) / {print "round " r " " n " " $0}'
   done

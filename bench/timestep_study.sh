@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Does the timestep change the results?  The whole protocol (preparation
 # and shear, inputs/cyclic_shear.lmp) for every seed and dt_factor given,
-# each run on one core, then analysis/make_figures.py on each, and one
-# table of the quantities the paper reports (bench/timestep_table.py).
+# each run on one core, then grflow-figures on each, and one table of the
+# quantities the paper reports (bench/timestep_table.py, on grflow-python;
+# both commands: on PATH, else in the build tree, bench/commands.sh).
 #   bash bench/timestep_study.sh OUTDIR "SEEDS" "FACTORS" [-var NAME VALUE ...]
 # e.g. the quick preset at three timesteps over three seeds:
 #   bash bench/timestep_study.sh runs/dt "5827 1 2" "0.1 0.2 0.3" -var preset quick
@@ -20,6 +21,9 @@
 # inputs/ during a study do not reach its runs); delete it to refreeze.
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
+. "$top/bench/commands.sh"
+figures=$(grflow_command grflow-figures)
+python=$(grflow_command grflow-python)
 out=${1:?usage: timestep_study.sh OUTDIR SEEDS FACTORS [-var ...]}
 seeds=${2:?SEEDS}
 factors=${3:?FACTORS}
@@ -51,8 +55,8 @@ for seed in $seeds; do
       -var seed "$seed" -var dt_factor "$f" "${stage[@]}" "$@"
     end=$(date +%s.%N)
     echo "$end - $start" | bc > "$dir/wall_seconds.txt"
-    /usr/bin/python3 "$top/analysis/make_figures.py" "$dir" > "$dir/figures.log" 2>&1
+    "$figures" "$dir" > "$dir/figures.log" 2>&1
     echo "seed $seed dt_factor $f: $(cat "$dir/wall_seconds.txt") s"
   done
 done
-/usr/bin/python3 "$top/bench/timestep_table.py" "$out"/s*_f*
+"$python" "$top/bench/timestep_table.py" "$out"/s*_f*

@@ -66,6 +66,11 @@ echo "LIGGGHTS with GRFLOW is set up."
 # "LIGGGHTS"), then its figures, as scripts/setup.sh does for LAMMPS
 # ===========================================================================
 [ "${GRFLOW_SKIP_RUN:-0}" = 1 ] && exit 0
+# grflow-figures as the bench scripts find it: on PATH (scripts/setup.sh
+# installs it), else in the build tree (bench/commands.sh); looked up
+# before the run
+. bench/commands.sh
+figures=$(grflow_command grflow-figures)
 np=$(( $(nproc) >= 2 ? 2 : 1 ))
 echo "running the protocol in LIGGGHTS, quick preset, on $np MPI ranks: runs/quick-liggghts" \
   "(log: runs/quick-liggghts/log.*.lammps)"
@@ -77,4 +82,4 @@ mpirun --allow-run-as-root --oversubscribe -np "$np" "$liggghts" -log none -scre
 echo "protocol done in $(( $(date +%s) - start )) s"
 grep -h "^GRFLOW " runs/quick-liggghts/log.prep.lammps runs/quick-liggghts/log.shear.lammps \
   | grep -v "^GRFLOW shear: step " || true
-/usr/bin/python3 analysis/make_figures.py runs/quick-liggghts
+"$figures" runs/quick-liggghts
