@@ -11,11 +11,11 @@ the runs' figures/summary.json as grflow-figures wrote them
 
 (grflow-python: the set-up's Python, which has matplotlib.)
 
-DIR (default runs/) holds the run directories of bench/vx_quick.sh (vx/),
-bench/timestep_study.sh (dtq10/, dtq10b/), bench/variants_quick.sh (arm/,
-route/), and the paper-size runs case03/ (v_x = 0.01 m/s) and vx005/
-(0.005 m/s, same preparation and time step); a missing run is left out of
-its panel.
+DIR (default runs/) holds the run directories of bench/variants_quick.sh
+(vx/: the wall speed, its variants named v<v_x>; arm/, route/),
+bench/timestep_study.sh (dtq10/, dtq10b/), and the paper-size runs
+case03/ (v_x = 0.01 m/s) and vx005/ (0.005 m/s, same preparation and time
+step); a missing run is left out of its panel.
 """
 
 import argparse
