@@ -598,8 +598,10 @@ def zg_inflections(series, N, events, liq, max_rows=2000,
     rather than the steepest point of the data: z_g is a fluctuating
     count, and the slope of an S-shaped rise is flat near its inflection,
     so the steepest sampled point wanders.  Returns a
-    list of dicts (exit row, N0, z_g = a + b/2, w, rms residual), one per
-    exit whose quarter cycle is complete in the series and rises (b > 0)."""
+    list of dicts (exit row, N0, z_g = a + b/2, w, rms residual, a, b, and
+    the knee of the fitted logistic, :func:`logistic_knee`: knee_N,
+    knee_z_g), one per exit whose quarter cycle is complete in the series
+    and rises (b > 0)."""
     zg = np.asarray(series["z_g"], dtype=float)
     rr = events["reversal_rows"]
     cr = events["crossing_rows"]
@@ -625,9 +627,29 @@ def zg_inflections(series, N, events, liq, max_rows=2000,
         n0, w, a, b, rms = _logistic_fit(n, z)
         if b <= 0.0:
             continue
+        knee_n, knee_z = logistic_knee(n0, w, a, b)
         out.append({"exit_row": int(e), "N": float(n0), "z_g": float(a + 0.5 * b),
-                    "width": float(w), "rms": float(rms)})
+                    "width": float(w), "rms": float(rms), "a": float(a), "b": float(b),
+                    "knee_N": float(knee_n), "knee_z_g": float(knee_z)})
     return out
+
+
+# The knee of a logistic rise z = a + b / (1 + exp(-(N - N0)/w)), b > 0:
+# where it has risen by this fraction of its jump b above its lower
+# asymptote a (issue 30, "the knee of the rise").  Not the point of
+# largest curvature, which moves with the scale chosen for z against N
+# (z_g is a count, N cycles: there is no natural ratio between the two).
+KNEE_FRACTION = 0.1
+
+
+def logistic_knee(n0, w, a, b, fraction=KNEE_FRACTION):
+    """The knee of the logistic z = a + b / (1 + exp(-(N - n0)/w)): the
+    point where z = a + fraction * b, at N = n0 - w ln((1 - fraction) /
+    fraction) (n0 - w ln 9 = n0 - 2.197 w for the default 0.1).  Returns
+    (N, z)."""
+    if not 0.0 < fraction < 1.0:
+        raise ValueError("knee fraction %r not in (0, 1)" % (fraction,))
+    return n0 - w * math.log((1.0 - fraction) / fraction), a + fraction * b
 
 
 # ---------------------------------------------------------------- summary
@@ -771,7 +793,8 @@ def _num(x):
     return x if math.isfinite(x) else None
 
 
-def summary(series, prep, events, cycle_index=None):
+def summary(series, prep, events, cycle_index=None, sample_ms=(), knee=False,
+            block_ms=(), percentile=None, overlaps=False, run_dir=None):
     """Measured values beside the paper's, plus cycle C, as a JSON-ready dict.
 
     ``prep`` is the prep.json dict (None if unavailable); ``events`` the
@@ -780,6 +803,14 @@ def summary(series, prep, events, cycle_index=None):
     cycles (default: the first with all six states).  Entries measured as
     "not reached" (an event that did not happen) or "not available"
     (missing input) never match.
+
+    The options of issue 30 (:func:`grflow_analysis.definitions.definitions`):
+    ``sample_ms`` (output intervals in ms to decimate the series to),
+    ``knee``, ``block_ms`` (windows in ms of block-averaged p for I),
+    ``percentile`` (q of a percentile of z_g after IL), ``overlaps`` (z_g
+    counting all overlaps at the snapshot states of cycle C, from the
+    snapshots of ``run_dir``).  With any of them the dict has the key
+    ``definitions``; without, it is as before them.
     """
     ru_liq, tau_amp = protocol(prep)
     N = cycle_count(series, events)
@@ -928,7 +959,7 @@ def summary(series, prep, events, cycle_index=None):
                 "z_g": _num(zg[r]), "a_c": _num(series["a_c"][r]),
                 "P_c": [_num(v) for v in connectivity(series, r)],
                 "P_c_non_floaters": [_num(v) for v in connectivity_non_floaters(series, r)]}
-    return {
+    out = {
         "ru_liq": ru_liq, "tau_amp": tau_amp,
         "rows": int(len(N)), "last_step": int(series["step"][-1]),
         "N_end": float(N[-1]), "reversals": int(np.max(series["reversals"])),
@@ -936,6 +967,12 @@ def summary(series, prep, events, cycle_index=None):
         "exit_N": [float(N[i]) for i in ex],
         "entries": entries, "cycle_C": cyc,
     }
+    if sample_ms or knee or block_ms or percentile is not None or overlaps:
+        from grflow_analysis import definitions as _defs
+        out["definitions"] = _defs.definitions(
+            series, events, ru_liq, sample_ms=sample_ms, knee=knee, block_ms=block_ms,
+            percentile=percentile, overlaps=overlaps, run_dir=run_dir, states=states)
+    return out
 
 
 def _fmt(v, unit=""):
@@ -1004,4 +1041,8 @@ def summary_markdown(s):
     lines.append("")
     lines.append("ru_liq = %g, tau_amp = %g kPa, %d rows, last step %d, N_end = %.4g."
                  % (s["ru_liq"], s["tau_amp"] / 1e3, s["rows"], s["last_step"], s["N_end"]))
-    return "\n".join(lines) + "\n"
+    text = "\n".join(lines) + "\n"
+    if "definitions" in s:
+        from grflow_analysis import definitions as _defs
+        text += _defs.definitions_markdown(s["definitions"])
+    return text

@@ -4,6 +4,8 @@
 """Figures 1-5 of the isochoric cyclic shearing paper and a summary table.
 
 usage: grflow-figures RUN_DIR [--out OUTDIR] [--cycle K] [--snapshot STEP]
+                      [--sample-ms MS,...] [--knee] [--block-ms MS,...]
+                      [--zg-percentile Q] [--overlaps]
 
 Writes fig1_snapshots.png, fig2_macro.png, fig3_zg.png, fig4_pc.png,
 fig5_ac_zg.png, summary.json and summary.md into OUTDIR (default
@@ -382,6 +384,17 @@ def _json_safe(v):
     return v
 
 
+def _ms_list(text):
+    """A comma-separated list of positive intervals in ms (argparse type)."""
+    try:
+        vals = [float(x) for x in text.split(",") if x.strip()]
+    except ValueError:
+        raise argparse.ArgumentTypeError("%r: not a list of numbers" % text)
+    if not vals or not all(math.isfinite(v) and v > 0.0 for v in vals):
+        raise argparse.ArgumentTypeError("%r: intervals must be positive numbers (ms)" % text)
+    return tuple(vals)
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("run_dir", help="run directory (prep.json, series.txt, snapshots/)")
@@ -391,7 +404,28 @@ def main(argv=None):
                     "the first one with all six states")
     ap.add_argument("--snapshot", type=int, default=None, metavar="STEP",
                     help="shear snapshot of Fig. 1 (default: the last one)")
+    opt = ap.add_argument_group(
+        "sampling and definitions (issue 30; added to the summary beside the present "
+        "definitions, which stay as they are)")
+    opt.add_argument("--sample-ms", type=_ms_list, default=(), metavar="MS[,MS...]",
+                     help="recompute exits, inflections, minima of z_g and I from the "
+                     "series decimated to these output intervals (ms of simulated time; "
+                     "the row nearest to each multiple)")
+    opt.add_argument("--knee", action="store_true",
+                     help="the knee of each exit's fitted logistic (lower asymptote + 10%% "
+                     "of the jump), beside its inflection")
+    opt.add_argument("--block-ms", type=_ms_list, default=(), metavar="MS[,MS...]",
+                     help="I from p averaged over blocks of these durations (ms); a block "
+                     "with mean p <= 0 has no I and is counted")
+    opt.add_argument("--zg-percentile", type=float, default=None, metavar="Q",
+                     help="the Q-th percentile of z_g after initial liquefaction, beside "
+                     "its minimum (e.g. 5)")
+    opt.add_argument("--overlaps", action="store_true",
+                     help="z_g counting all overlaps (f_n <= 0 too) from the contact "
+                     "snapshots at C0, C1, C2, C3 of cycle C")
     args = ap.parse_args(argv)
+    if args.zg_percentile is not None and not 0.0 <= args.zg_percentile <= 100.0:
+        ap.error("--zg-percentile %g: not in [0, 100]" % args.zg_percentile)
 
     run_dir = args.run_dir
     if not os.path.isdir(run_dir):
@@ -427,7 +461,9 @@ def main(argv=None):
     os.makedirs(out, exist_ok=True)
 
     run = Run(run_dir, series, prep, events, args.cycle)
-    summ = ga.summary(series, prep, run.events, args.cycle)
+    summ = ga.summary(series, prep, run.events, args.cycle, sample_ms=args.sample_ms,
+                      knee=args.knee, block_ms=args.block_ms, percentile=args.zg_percentile,
+                      overlaps=args.overlaps, run_dir=run_dir)
     summ["run_dir"] = os.path.abspath(run_dir)
     with open(os.path.join(out, "summary.json"), "w") as f:
         json.dump(_json_safe(summ), f, indent=1, allow_nan=False)
