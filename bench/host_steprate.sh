@@ -29,7 +29,8 @@ for ((r = 1; r <= rounds; r++)); do
       src=$out/${host}_s$seed
       dst=$(mktemp -d "${TMPDIR:-/tmp}/grflow-steprate.XXXXXX")
       cp -r "$src/prep.json" "$src/series.txt" "$src/events.txt" "$src/snapshots" "$dst/"
-      cp "$src/shear.restart.$start" "$dst/"
+      # with its checksum file: the decks resume only from a file that verifies
+      cp "$src/shear.restart.$start" "$src/shear.restart.$start.cksum" "$dst/"
       if [ $host = lammps ]; then
         cmd=("$lmp" -in inputs/cyclic_shear.lmp)
       else

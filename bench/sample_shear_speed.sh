@@ -39,7 +39,8 @@ if [ -z "$last" ]; then
 fi
 points=(0)
 for f in $(ls "$rundir" | sed -n 's/^shear\.restart\.\([0-9]*\)$/\1/p' | sort -n); do
-  [ "$f" -lt "$last" ] && points+=("$f")
+  # step 0 is prep.restart's sample (the deck may write shear.restart.0 too)
+  [ "$f" -gt 0 ] && [ "$f" -lt "$last" ] && points+=("$f")
 done
 sel=()
 for i in "${!points[@]}"; do
@@ -50,12 +51,14 @@ done
 sample() {
   local k=$1 np=$2 dir=$out/np$2.$1 resume=yes
   rm -rf "$dir" && mkdir -p "$dir/snapshots"
+  # the file and its checksum file (the deck resumes only from a file that verifies)
+  local file=shear.restart.$k
   if [ "$k" -eq 0 ]; then
-    ln -s "$rundir/prep.restart" "$dir/prep.restart"
+    file=prep.restart
     resume=no
-  else
-    ln -s "$rundir/shear.restart.$k" "$dir/shear.restart.$k"
   fi
+  ln -s "$rundir/$file" "$dir/$file"
+  [ -f "$rundir/$file.cksum" ] && ln -s "$rundir/$file.cksum" "$dir/$file.cksum"
   local extra=() v
   read -r -a v <<< "${VARS:-}"
   for ((j = 0; j + 1 < ${#v[@]}; j += 2)); do extra+=(-var "${v[$j]}" "${v[$((j + 1))]}"); done

@@ -39,7 +39,11 @@ for round in $(seq 1 "$rounds"); do
     IFS='|' read -r name np args vlmp mpiargs <<< "$variant"
     dir=$out/$name
     rm -rf "$dir" && mkdir -p "$dir/snapshots"
-    if [ "$resume" = yes ]; then ln -s "$restart" "$dir/shear.restart.$k"; else ln -s "$restart" "$dir/prep.restart"; fi
+    # the file and its checksum file (the deck resumes only from a file that verifies)
+    link=$dir/prep.restart
+    [ "$resume" = yes ] && link=$dir/shear.restart.$k
+    ln -s "$restart" "$link"
+    [ -f "$restart.cksum" ] && ln -s "$restart.cksum" "$link.cksum"
     bin=${vlmp:-$lmp}
     cmd=("$bin")
     # shellcheck disable=SC2206
