@@ -351,6 +351,62 @@ def overlaps_at_states(run_dir, series, states, slab=DECK_SLAB):
     return out
 
 
+def overlaps_over_snapshots(run_dir, series, step_il, slab=DECK_SLAB):
+    """The two counting rules on every shear snapshot from initial
+    liquefaction on (snapshot step >= step_IL), each snapshot with
+    itself, so that the difference is that of the rule alone.  The
+    snapshots are split by the kind of the fix's event they belong to
+    (events.txt: the event with the largest step at or before the
+    snapshot's; kind 2, the first zero-crossing of tau after a reversal,
+    as C0 and C2; kind 1, a reversal, as C1 and C3).  zlo/zhi: those of
+    the first series row at or after the snapshot's step.
+
+    Returns a dict kind name ("crossings", "reversals") -> dict with
+    ``snapshots``, ``z_g_fn_positive_mean``, ``z_g_all_overlaps_mean``,
+    ``difference_mean`` and ``difference_max`` (all overlaps minus f_n > 0),
+    ``ends_fn_nonpositive_fraction`` (of all the contact ends counted
+    under "all", those of pairs with f_n <= 0); NOT_REACHED without
+    initial liquefaction, and an empty dict without events.txt."""
+    if step_il is None:
+        return ga.NOT_REACHED
+    try:
+        table = ga.read_events(os.path.join(run_dir, "events.txt"))
+    except (OSError, ga.FormatError):
+        return {}
+    snaps = dict(ga.list_snapshots(run_dir, "atoms"))
+    csnaps = dict(ga.list_snapshots(run_dir, "contacts"))
+    acc = {"crossings": [], "reversals": []}
+    for st in sorted(set(snaps) & set(csnaps)):
+        if st < step_il:
+            continue
+        k = int(np.searchsorted(table["step"], st, side="right")) - 1
+        if k < 1:                      # the start line, not an event
+            continue
+        kind = "crossings" if int(table["event"][k]) == 2 else "reversals"
+        r = min(int(np.searchsorted(series["step"], st, side="left")), len(series["step"]) - 1)
+        atoms = ga.read_dump_atoms(snaps[st])
+        cont = ga.read_dump_local(csnaps[st])
+        zlo, zhi = float(series["zlo"][r]), float(series["zhi"][r])
+        allo = zg_overlaps(atoms, cont, zlo, zhi, slab, "all")
+        pos = zg_overlaps(atoms, cont, zlo, zhi, slab, "fn>0")
+        acc[kind].append((pos["z_g"], allo["z_g"], allo["ends_fn_nonpositive"],
+                          2.0 * allo["N_c"]))
+    out = {}
+    for kind, v in acc.items():
+        if not v:
+            out[kind] = {"snapshots": 0}
+            continue
+        a = np.array(v, dtype=float)
+        diff = a[:, 1] - a[:, 0]
+        ends = a[:, 3].sum()
+        out[kind] = {"snapshots": int(len(a)), "z_g_fn_positive_mean": float(a[:, 0].mean()),
+                     "z_g_all_overlaps_mean": float(a[:, 1].mean()),
+                     "difference_mean": float(diff.mean()), "difference_max": float(diff.max()),
+                     "ends_fn_nonpositive_fraction": float(a[:, 2].sum() / ends) if ends
+                     else ga.NOT_AVAILABLE}
+    return out
+
+
 # ---------------------------------------------------------------- entries
 
 def _row(name, description, unit, measured, base=None):
@@ -483,6 +539,31 @@ def definitions(series, events, ru_liq, sample_ms=(), knee=False, block_ms=(),
     if overlaps:
         ov = overlaps_at_states(run_dir, series, states) if run_dir else {}
         out["overlaps"] = ov
+        allsnap = (overlaps_over_snapshots(run_dir, series, events["step_IL"])
+                   if run_dir else {})
+        out["overlaps_post_IL"] = allsnap
+        for kind, label in (("crossings", "the first zero-crossings of tau after a "
+                             "reversal (as C0, C2)"),
+                            ("reversals", "the reversals (as C1, C3)")):
+            x = allsnap.get(kind) if isinstance(allsnap, dict) else None
+            if isinstance(allsnap, str):
+                meas = allsnap
+            elif not x or not x["snapshots"]:
+                meas = ga.NOT_AVAILABLE
+            else:
+                meas = x["difference_mean"]
+            desc = ("mean over the snapshots at %s from initial liquefaction on of z_g "
+                    "counting all overlaps minus z_g counting f_n > 0, both from the same "
+                    "snapshot" % label)
+            if x and x.get("snapshots"):
+                desc += ("; %d snapshots, means %s (f_n > 0) and %s (all overlaps), largest "
+                         "difference %s, %s of the counted contact ends have f_n <= 0"
+                         % (x["snapshots"], ga._fmt(x["z_g_fn_positive_mean"]),
+                            ga._fmt(x["z_g_all_overlaps_mean"]),
+                            ga._fmt(x["difference_max"]),
+                            ga._fmt(x["ends_fn_nonpositive_fraction"])))
+            entries.append(_row("z_g_all_overlaps_minus_fn_positive_%s" % kind, desc,
+                                "-", meas))
         for stn in OVERLAP_STATES:
             d = ov.get(stn, ga.NOT_AVAILABLE)
             meas = d["z_g_all_overlaps"] if isinstance(d, dict) else d

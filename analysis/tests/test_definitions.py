@@ -277,7 +277,8 @@ def test_command_with_the_options(run_dir, tmp_path):
     for n in ("z_g_knees", "z_g_knee_mean", "z_g_post_IL_p5", "inertial_block3ms_max",
               "inertial_block3ms_undefined_blocks", "n_exits@2ms", "z_g_exit_mean@5ms",
               "z_g_post_IL_min@2ms", "z_g_post_IL_p5@5ms", "inertial_max@2ms",
-              "z_g_all_overlaps_C0", "z_g_all_overlaps_C2"):
+              "z_g_all_overlaps_C0", "z_g_all_overlaps_C2",
+              "z_g_all_overlaps_minus_fn_positive_crossings"):
         assert n in names, n
     assert d["options"] == {"sample_ms": [2.0, 5.0], "knee": True, "block_ms": [3.0],
                             "percentile": 5.0, "overlaps": True}
@@ -298,3 +299,35 @@ def test_command_rejects_bad_options(run_dir, tmp_path, args):
                           str(tmp_path / "o")] + args, capture_output=True, text=True,
                          timeout=120)
     assert res.returncode == 2 and "error" in res.stderr
+
+
+def test_overlaps_over_snapshots_split_by_event_kind(tmp_path):
+    """Two snapshots after initial liquefaction (step_IL 100), both the
+    hand-made snapshot above (all overlaps z_g 5/4, f_n > 0 z_g 1): one on
+    a zero-crossing (step 200, event 2) and one on a reversal (step 300,
+    event 1); one before the onset (step 50), left out."""
+    from test_analysis import write_atoms, write_contacts
+    atoms, cont = snapshot()
+    snap = tmp_path / "snapshots"
+    snap.mkdir()
+    a = atoms["columns"]
+    xyz = np.column_stack([np.arange(8) * 2e-3, np.zeros(8), a["z"]])
+    box = [(0.0, 0.02), (0.0, 0.02), (0.0, 0.01)]
+    pairs = [(1, 2, 0.5), (2, 3, 0.0), (7, 6, 0.2), (5, 6, 1.0)]
+    for st in (50, 200, 300):
+        write_atoms(str(snap / ("atoms.%d.txt" % st)), st, a["id"].astype(int), a["radius"],
+                    xyz, a["glue"].astype(int), box)
+        write_contacts(str(snap / ("contacts.%d.txt" % st)), st, pairs, box)
+    (tmp_path / "events.txt").write_text(
+        "# step time event reversals N N_IL step_IL\n0 0 0 0 0 -1 -1\n"
+        "150 1.5 1 1 0.25 -1 100\n200 2 2 1 0.5 0.3 100\n300 3 1 2 0.75 0.3 100\n")
+    series = {"step": np.array([0.0, 100, 200, 300]), "zlo": np.zeros(4),
+              "zhi": np.full(4, 0.01)}
+    out = gd.overlaps_over_snapshots(str(tmp_path), series, 100)
+    for kind in ("crossings", "reversals"):
+        x = out[kind]
+        assert x["snapshots"] == 1
+        assert x["z_g_fn_positive_mean"] == 1.0 and x["z_g_all_overlaps_mean"] == 1.25
+        assert x["difference_mean"] == pytest.approx(0.25, abs=1e-15)
+        assert x["ends_fn_nonpositive_fraction"] == pytest.approx(2 / 5, abs=1e-15)
+    assert gd.overlaps_over_snapshots(str(tmp_path), series, None) == ga.NOT_REACHED
