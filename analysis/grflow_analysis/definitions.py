@@ -475,7 +475,8 @@ def definitions(series, events, ru_liq, sample_ms=(), knee=False, block_ms=(),
     if percentile is not None:
         entries.append(_row(qname, "percentile q = %g of z_g over the rows from initial "
                             "liquefaction on (numpy percentile, linear interpolation between "
-                            "order statistics), beside z_g_post_IL_min" % percentile, "-", full["z_g_post_IL_pct"]))
+                            "order statistics), beside z_g_post_IL_min" % percentile, "-",
+                            full["z_g_post_IL_pct"]))
     for w in opts["block_ms"]:
         b = block_inertial(series, w * 1e-3, full.get("onset"))
         sampled["block_%s" % _ms(w)] = b

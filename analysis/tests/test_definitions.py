@@ -331,3 +331,19 @@ def test_overlaps_over_snapshots_split_by_event_kind(tmp_path):
         assert x["difference_mean"] == pytest.approx(0.25, abs=1e-15)
         assert x["ends_fn_nonpositive_fraction"] == pytest.approx(2 / 5, abs=1e-15)
     assert gd.overlaps_over_snapshots(str(tmp_path), series, None) == ga.NOT_REACHED
+
+
+def test_options_on_a_run_that_never_liquefied(tmp_path):
+    from fractions import Fraction as F
+    root = make_run(str(tmp_path / "dry"), liquefy=False, quarters=13, last_fraction=F(1, 2))[0]
+    s = ga.read_series(os.path.join(root, "series.txt"))
+    summ = ga.summary(s, None, ga.run_events(root, s), sample_ms=(2,), knee=True,
+                      block_ms=(3,), percentile=5, overlaps=True, run_dir=root)
+    e = {x["name"]: x for x in summ["definitions"]["entries"]}
+    for n in ("z_g_knee_mean", "z_g_post_IL_p5", "inertial_block3ms_median_post_IL",
+              "n_exits@2ms", "z_g_post_IL_min@2ms", "z_g_all_overlaps_C0",
+              "z_g_all_overlaps_minus_fn_positive_crossings"):
+        assert e[n]["measured"] == ga.NOT_REACHED, n
+        assert e[n]["match"] is False
+    assert isinstance(e["inertial_block3ms_max"]["measured"], float)
+    json.dumps(summ, allow_nan=False)
