@@ -186,7 +186,8 @@ needs_liggghts = pytest.mark.skipif(not LIGGGHTS, reason="no LIGGGHTS build (LIG
 def test_host_speed_liggghts(packing, tmp_path):
     out = with_packing(packing, tmp_path / "hosts")
     text = bench("host_speed.sh", out, env={"LIGGGHTS": LIGGGHTS, "ROUNDS": "1",
-                                            "NSTEPS": "200", "NWARM": "50"})
+                                            "NSTEPS": "200", "NWARM": "50",
+                                            "HOME": str(tmp_path)})
     lines = [line for line in text.splitlines() if line.split()[:1] == ["1"]]
     assert len(lines) == 1 and len(lines[0].split()) >= 4, text
 
@@ -198,7 +199,9 @@ def test_host_agreement_and_steprate_liggghts(tmp_path):
     of both runs."""
     out = tmp_path / "hosts"
     vars_ = TINY + ["-var", "max_steps", 2000, "-var", "restart_every", 1000]
-    env = {"LIGGGHTS": LIGGGHTS, "TMPDIR": str(tmp_path)}
+    # HOME: the LIGGGHTS decks' generated files in a cache of this test's
+    # own ($HOME/.cache/grflow/liggghts), not one that other runs share
+    env = {"LIGGGHTS": LIGGGHTS, "TMPDIR": str(tmp_path), "HOME": str(tmp_path)}
     text = bench("host_agreement.sh", out, "1", *vars_, env=env)
     for host in ("lammps", "liggghts"):
         assert (out / f"{host}_s1" / "figures" / "summary.json").is_file(), text
