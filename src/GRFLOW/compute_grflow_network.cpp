@@ -220,10 +220,6 @@ void ComputeGRFLOWNetwork::compute_vector()
 
 const double *ComputeGRFLOWNetwork::compute_stress()
 {
-  // a vector of this step evaluated before may no longer be current
-  // (atoms changed between runs, p0 taken since): whoever reads it next
-  // evaluates it again
-  if (invoked_vector == update->ntimestep) invoked_vector = -1;
   invoked_stress = update->ntimestep;
   evaluate(false, stress);
   return stress;

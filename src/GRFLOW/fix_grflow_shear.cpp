@@ -104,14 +104,15 @@ void FixGRFLOWShear::init()
 void FixGRFLOWShear::setup(int /*vflag*/)
 {
   const bool first = !state.started;
-  // the stresses of this step, evaluated afresh (atoms may have been
-  // changed between runs since the compute's last evaluation on this
-  // step); the compute's r_u is that of this fix's p0 (p0())
-  const double *stress = network->compute_stress();
+  // the whole vector, evaluated afresh (atoms may have been changed
+  // between runs since the compute's last evaluation on this step), so
+  // that what reads the compute between runs finds it current; its r_u is
+  // that of this fix's p0 (p0())
+  network->compute_vector();
   if (first) {
     GRFLOW::FixHost host{lmp};
-    state.start(stress[ComputeGRFLOWNetwork::PRESS], sim_time(), host);
-    network->compute_stress();    // r_u with the p0 just taken
+    state.start(network->vector[ComputeGRFLOWNetwork::PRESS], sim_time(), host);
+    network->compute_vector();    // r_u with the p0 just taken
   }
   drive_wall();
   progress.start(platform::walltime(), update->ntimestep);

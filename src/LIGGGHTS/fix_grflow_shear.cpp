@@ -77,13 +77,14 @@ void FixGRFLOWShear::init()
 void FixGRFLOWShear::setup(int)
 {
   const bool first = !state.started;
-  // this step's stresses afresh (atoms may have changed between runs);
-  // the compute's r_u is that of this fix's p0 (p0())
-  const double *stress = network->compute_stress();
+  // the whole vector afresh (atoms may have changed between runs): the
+  // decks' variables read the compute between runs, and LIGGGHTS requires
+  // it current there; its r_u is that of this fix's p0 (p0())
+  network->compute_vector();
   if (first) {
     FixHost host = {lmp};
-    state.start(stress[ComputeGRFLOWNetwork::PRESS], update->get_cur_time(), host);
-    network->compute_stress();    // r_u with the p0 just taken
+    state.start(network->vector[ComputeGRFLOWNetwork::PRESS], update->get_cur_time(), host);
+    network->compute_vector();    // r_u with the p0 just taken
   }
   move_wall();
   progress.start(MPI_Wtime(), update->ntimestep);
