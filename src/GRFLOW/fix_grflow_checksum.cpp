@@ -113,7 +113,7 @@ void FixGRFLOWChecksum::check()
     // just written is the one before the toggle
     if (message.empty() && output->restart_flag_double && step % output->restart_every_double == 0)
       message = GRFLOW::write_checksum_file(output->restart_toggle ? output->restart2a
-                                                                  : output->restart2b);
+                                                                   : output->restart2b);
   }
   int failed = message.empty() ? 0 : 1;
   MPI_Bcast(&failed, 1, MPI_INT, 0, world);
