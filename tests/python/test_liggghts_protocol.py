@@ -26,6 +26,7 @@ scripts/build-liggghts.sh), MPIEXEC, GRFLOW_INPUTS (the inputs/ directory).
 import json
 import math
 import os
+import re
 import signal
 import subprocess
 import time
@@ -140,8 +141,13 @@ def test_whole_protocol_reaches_liquefaction(protocol):
     assert steps[0] == 0.0 and steps == sorted(set(steps))
     assert all(b - a == 50 for a, b in zip(steps, steps[1:]))
     # the time since shearing started (LIGGGHTS's restart files keep no
-    # time: the decks' time is step * dt)
-    assert all(t == pytest.approx(s * prep["dt"], rel=1e-9, abs=1e-15)
+    # time: the decks' time is step * dt, with the shear stage's dt, the
+    # preparation's times dt_factor_shear / dt_factor of params.lmp)
+    params = open(os.path.join(INPUTS, "params.lmp")).read()
+    factor = {k: float(re.search(rf"^variable\s+{k}\s+index\s+(\S+)", params, re.M).group(1))
+              for k in ("dt_factor", "dt_factor_shear")}
+    dt_shear = prep["dt"] * factor["dt_factor_shear"] / factor["dt_factor"]
+    assert all(t == pytest.approx(s * dt_shear, rel=1e-9, abs=1e-15)
                for s, t in zip(steps, col["time"]))
     ru_max = max(col["r_u"])
     log = (out / "log.shear.lammps").read_text()
