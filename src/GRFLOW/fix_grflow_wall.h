@@ -76,6 +76,7 @@ class FixGRFLOWWall : public Fix, public GRFLOW::FlatWalls {
 
  private:
   [[noreturn]] void crossed(int, int);
+  void check_box();
   GRFLOW::WallSpheres spheres() const;
 };
 

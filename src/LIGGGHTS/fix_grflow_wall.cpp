@@ -112,6 +112,7 @@ void FixGRFLOWWall::init()
 
 void FixGRFLOWWall::setup(int vflag)
 {
+  check_box();
   post_force(vflag);
 }
 
@@ -120,6 +121,21 @@ void FixGRFLOWWall::setup(int vflag)
 void FixGRFLOWWall::initial_integrate(int /*vflag*/)
 {
   if (!move()) error->all(FLERR, top_reached_message(id).c_str());
+  check_box();
+}
+
+/* ----------------------------------------------------------------------
+   a wall beyond a fixed face of the box (boundary f in z): an error that
+   names it, before atoms reach that face and are lost
+------------------------------------------------------------------------- */
+
+void FixGRFLOWWall::check_box()
+{
+  FixHost host{lmp};
+  const std::string message =
+      outside_box_message(id, domain->boxlo[2], domain->boxhi[2], domain->boundary[2][0] == 1,
+                          domain->boundary[2][1] == 1, host);
+  if (!message.empty()) error->all(FLERR, message.c_str());
 }
 
 /* ----------------------------------------------------------------------

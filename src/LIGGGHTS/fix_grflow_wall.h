@@ -62,6 +62,7 @@ class FixGRFLOWWall : public Fix, public GRFLOW::FlatWalls {
 
  private:
   void crossed(int, int);
+  void check_box();
   GRFLOW::WallSpheres spheres() const;
 };
 

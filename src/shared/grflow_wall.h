@@ -294,6 +294,30 @@ namespace GRFLOW {
           host.text(walls[w].z) + ")";
     }
 
+    // a wall beyond a fixed (non-periodic, not shrink-wrapped) face of the
+    // box in z: an atom that reaches that face leaves the box (the host's
+    // "Lost atoms") before it can touch the wall.  The message, or empty
+    // when both active walls are within the box's fixed faces.
+    template <class Host>
+    std::string outside_box_message(const char *id, double boxlo, double boxhi, bool fixed_lo,
+                                    bool fixed_hi, Host &host) const
+    {
+      for (int iw = 0; iw < NWALL; iw++) {
+        const Wall &wall = walls[iw];
+        if (!wall.active) continue;
+        const bool below = (iw == LO) && fixed_lo && wall.z < boxlo;
+        const bool above = (iw == HI) && fixed_hi && wall.z > boxhi;
+        if (below || above)
+          return std::string("Fix grflow/wall ") + id + ": the " + wall_name(iw) +
+              " wall (z = " + host.text(wall.z) + ") is outside the box's fixed " +
+              (below ? "lower face (z = " + host.text(boxlo)
+                     : "upper face (z = " + host.text(boxhi)) +
+              "): atoms would leave the box there before they reach the wall; move the wall "
+              "inside the box or use boundary s or m in z";
+      }
+      return "";
+    }
+
     // another command's use of a fix as the cell of two walls (find_cell()):
     // the fix does not exist, is not a fix grflow/wall, has one wall only
     enum { CELL_MISSING, CELL_NOT_WALL, CELL_ONE_WALL };

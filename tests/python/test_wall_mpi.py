@@ -173,6 +173,51 @@ def test_crossing_at_the_box_face_is_the_walls_error(tmp_path):
         assert "Lost atoms" not in text
 
 
+WALL_OUTSIDE = """
+units           si
+atom_style      sphere
+boundary        p p {bz}
+region          box block 0 0.01 0 0.01 0 0.01
+create_box      1 box
+create_atoms    1 single 0.005 0.005 0.005
+set             type 1 diameter 0.001 density 2650
+comm_modify     vel yes
+fix             w all grflow/wall 1.0e6 1.15 {walls}
+fix             g all gravity 9.81 vector 0 0 -1
+fix             nve all nve/sphere
+timestep        1.0e-6
+run             100000
+"""
+
+
+@pytest.mark.parametrize("bz,walls,expect", [
+    ("f", "zlo -0.002", "the zlo wall (z = -0.002) is outside the box's fixed lower face (z = 0)"),
+    ("f", "zlo 0.0 zhi 0.011", "the zhi wall (z = 0.011) is outside the box's fixed upper face "
+                               "(z = 0.01)"),
+])
+def test_wall_outside_a_fixed_face_is_named(tmp_path, bz, walls, expect):
+    """A wall beyond a fixed face of the box: an atom falling towards it
+    leaves the box first, which LAMMPS reports as "Lost atoms: original 1
+    current 0" with nothing that names the wall; the fix names it at the
+    start of the run, on 1 and 2 ranks."""
+    deck = tmp_path / "outside.lmp"
+    deck.write_text(WALL_OUTSIDE.format(bz=bz, walls=walls))
+    for nprocs in (1, 2):
+        proc = run_lmp(["-in", str(deck)], tmp_path, nprocs, check=False, timeout=120)
+        text = proc.stdout + proc.stderr
+        assert proc.returncode != 0
+        assert "Fix grflow/wall w: " + expect in text
+        assert "Lost atoms" not in text
+
+
+def test_wall_outside_a_shrink_wrapped_face_is_fine(tmp_path):
+    """with boundary s the box grows with the atoms: the same wall below
+    the initial box is reached, no error"""
+    deck = tmp_path / "outside_s.lmp"
+    deck.write_text(WALL_OUTSIDE.format(bz="s", walls="zlo -0.002").replace("100000", "30000"))
+    run_lmp(["-in", str(deck)], tmp_path, 1, timeout=120)
+
+
 def test_minimize_warns_that_walls_do_not_act(tmp_path):
     deck = tmp_path / "minimize.lmp"
     deck.write_text(CROSSING.replace("1 1 2", "1 1 *").replace("run             100000",
