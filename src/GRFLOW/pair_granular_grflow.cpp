@@ -353,11 +353,22 @@ void PairGranularGRFLOW::read_restart(FILE *fp)
     for (int j = i; j <= atom->ntypes; j++) {
       if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
       MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
+      // a damaged file: a clear error, not coefficients nobody gave
+      if (setflag[i][j] != 0 && setflag[i][j] != 1)
+        error->all(FLERR,
+                   "Pair granular/grflow: damaged restart file: types {} {} have the set flag {}",
+                   i, j, setflag[i][j]);
       if (setflag[i][j]) {
+        double value[NCOEFF];
         for (int k = 0; k < NCOEFF; k++) {
           if (me == 0) utils::sfread(FLERR, &param[k][i][j], sizeof(double), 1, fp, nullptr, error);
           MPI_Bcast(&param[k][i][j], 1, MPI_DOUBLE, 0, world);
+          value[k] = param[k][i][j];
         }
+        FixHost host{lmp};
+        GRFLOW::check_coeff_values(
+            fmt::format("Pair granular/grflow: damaged restart file: types {} {}", i, j), value,
+            host);
       }
     }
 }

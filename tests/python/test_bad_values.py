@@ -9,6 +9,8 @@ closed after it.)
 
 Environment: LMP (lmp binary).
 """
+import struct
+
 import pytest
 
 from lmprun import run_lmp
@@ -112,3 +114,39 @@ def test_network_zlimits_and_volume_must_be_finite(tmp_path, args, expect):
                               f"compute net all grflow/network {args}\n"
                               "thermo_style custom step c_net[1]\nrun 0\n")
     assert expect in text, text[-2000:]
+
+
+RESTART_PAIR = """
+units           si
+atom_style      sphere
+region          box block 0 0.01 0 0.01 0 0.01
+create_box      1 box
+create_atoms    1 single 0.005 0.005 0.005
+set             type 1 diameter 0.001 density 2650
+pair_style      granular/grflow
+pair_coeff      * * 1.0e6 1.15
+comm_modify     vel yes
+write_restart   pair.restart
+"""
+
+
+@pytest.mark.parametrize("value,expect", [
+    (float("nan"), "kn must be finite, got nan"),
+    (-1.0, "kn must be > 0, got -1"),
+])
+def test_damaged_pair_coefficients_in_a_restart_file(tmp_path, value, expect):
+    """A restart file whose pair coefficients were damaged (the bytes of kn
+    overwritten): read_restart stops with the pair style's rule for kn,
+    naming the types, instead of running with them."""
+    (tmp_path / "write.lmp").write_text(RESTART_PAIR)
+    run_lmp(["-in", "write.lmp"], tmp_path)
+    path = tmp_path / "pair.restart"
+    data = path.read_bytes()
+    coeffs = struct.pack("=dd", 1.0e6, 1.15)
+    assert data.count(coeffs) == 1
+    path.write_bytes(data.replace(coeffs, struct.pack("=dd", value, 1.15)))
+    (tmp_path / "read.lmp").write_text("read_restart pair.restart\nrun 0\n")
+    proc = run_lmp(["-in", "read.lmp"], tmp_path, check=False)
+    assert proc.returncode != 0
+    assert ("Pair granular/grflow: damaged restart file: types 1 1: " + expect
+            in proc.stdout + proc.stderr)
