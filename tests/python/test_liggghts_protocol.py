@@ -215,8 +215,12 @@ def test_fix_events_agree_with_the_series(protocol):
     ru_liq = json.loads((out / "prep.json").read_text())["ru_liq"]
     own = series_events(series, ru_liq)
     n_rev = int(series["reversals"][-1])
-    assert n_rev >= 4 and len(fix["reversal_rows"]) == len(own["reversal_rows"]) == n_rev
-    assert fix["reversal_rows"] == own["reversal_rows"]
+    # the stage ends on the step of its last event and the series' last row
+    # may come before it (series_every): an event after the last row has
+    # no row, and the series does not show it
+    assert all(r is None for r in fix["reversal_rows"][n_rev:])
+    assert n_rev >= 4 and len(own["reversal_rows"]) == n_rev
+    assert fix["reversal_rows"][:n_rev] == own["reversal_rows"]
     for k, row in own["crossing_rows"].items():
         if k > 0 and row is not None:
             assert fix["crossing_rows"][k] is not None and fix["crossing_rows"][k] <= row, k
