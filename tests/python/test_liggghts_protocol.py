@@ -486,6 +486,7 @@ def test_contact_ratios_reach_particles_and_walls(tmp_path, cache):
     ({"check_every": "0"}, "each must be >= 1"),
     ({"max_cycles": "-1"}, "max_cycles -1 must be >= 0"),
     ({"newton_pair": "maybe"}, "newton_pair maybe: use on or off"),
+    ({"normal_force": "maybe"}, "normal_force maybe: use clipped or unclipped"),
     ({"timing": "maybe"}, "timing maybe: use yes or no"),
     ({"calibrate": "maybe"}, "calibrate maybe: use yes or no"),
     # a value that is no number: named by params.lmp's check, as in LAMMPS

@@ -412,6 +412,24 @@ def test_kill_and_resume_gives_one_series(protocol, tmp_path):
             in (killed / "log.shear.lammps").read_text())
 
 
+def test_normal_force_reaches_pair_and_walls(protocol, tmp_path):
+    """-var normal_force unclipped in a shear stage from a clipped
+    preparation: the pair style and the walls take the unclipped law (the
+    walls warn when their law is not the pair style's: no warning), and
+    the run differs from the clipped one (the unclipped law pulls where
+    the dashpot outweighs the spring)."""
+    src, _ = protocol
+    common = dict(SMALL, stage="shear", max_steps=2000, n_post=1000)
+    rows = {}
+    for law in ("clipped", "unclipped"):
+        out = shear_dir(tmp_path / law, src)
+        proc = run(out, normal_force=law, **common)
+        text = proc.stdout + proc.stderr + (out / "log.shear.lammps").read_text()
+        assert "is not the pair style's normal_force" not in text
+        rows[law] = read_series(out / "series.txt")
+    assert rows["clipped"][-1] != rows["unclipped"][-1]
+
+
 def test_resume_before_the_first_restart_file(protocol, tmp_path):
     """A shear stage killed before its first periodic restart file resumes
     from shear.restart.0 (the copy of prep.restart the stage makes when it
@@ -615,6 +633,7 @@ def test_contact_ratios_reach_particles_and_walls(tmp_path, deck):
     ({"check_every": "0"}, "each must be >= 1"),
     ({"max_cycles": "-1"}, "max_cycles -1 must be >= 0"),
     ({"newton_pair": "maybe"}, "newton_pair maybe: use on or off"),
+    ({"normal_force": "maybe"}, "normal_force maybe: use clipped or unclipped"),
 ])
 def test_bad_parameters(tmp_path, var, expect):
     proc = subprocess.run(lmp_cmd(tmp_path / "bad", screen=True, **var), capture_output=True,
