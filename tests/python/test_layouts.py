@@ -14,8 +14,8 @@ of any one place alone fails here:
   writes (names.lmp's variables, so the title's columns are tied to the
   headers through names.lmp);
 - analysis/ (SERIES_COLUMNS, PC_COLUMNS, read by parsing, not importing:
-  no path or install state is assumed), tests/python/test_protocol.py
-  (COLUMNS) and the series table of inputs/README.md, against that title.
+  no path or install state is assumed), tests/python/runfiles.py
+  (COLUMNS, the series columns of both hosts' deck tests) and the series table of inputs/README.md, against that title.
 
 Each check returns its problems; test_checks_can_fail moves one place at
 a time and shows that the checks see it.
@@ -253,7 +253,7 @@ def readme_series(text):
 def check_columns(title, series_columns, pc_columns, protocol_columns, readme_columns):
     problems = []
     for where, cols in (("analysis SERIES_COLUMNS", series_columns),
-                        ("tests/python/test_protocol.py COLUMNS", protocol_columns),
+                        ("tests/python/runfiles.py COLUMNS", protocol_columns),
                         ("inputs/README.md series table", readme_columns)):
         if list(cols or []) != list(title):
             problems.append(f"{where}: {list(cols or [])} is not the series title {title}")
@@ -275,7 +275,7 @@ def places():
         "readme": read(os.path.join(INPUTS, "README.md")),
         "series_columns": module and assigned_value(module, "SERIES_COLUMNS"),
         "pc_columns": module and assigned_value(module, "PC_COLUMNS"),
-        "protocol_columns": assigned_value(os.path.join(HERE, "test_protocol.py"), "COLUMNS"),
+        "protocol_columns": assigned_value(os.path.join(HERE, "runfiles.py"), "COLUMNS"),
     }
 
 
@@ -328,7 +328,7 @@ def test_checks_can_fail(places, layouts):
                                                     r"\1 cmax 8", places["shear"])),
         "analysis": dict(places, series_columns=tuple(places["series_columns"][:-1])),
         "analysis P_c": dict(places, pc_columns=tuple(places["pc_columns"][:-1])),
-        "test_protocol.py": dict(places, protocol_columns=list(places["protocol_columns"])[::-1]),
+        "runfiles.py": dict(places, protocol_columns=list(places["protocol_columns"])[::-1]),
         "README.md": dict(places, readme=places["readme"].replace("| 7 | `tau` |", "| 7 | `p` |")),
     }
     for where, p in moved.items():

@@ -30,21 +30,18 @@ import re
 import signal
 import subprocess
 import time
-import warnings
 
 import pytest
 
 import grflow_analysis as ga
 from grflow_reference import network_from_snapshot, series_events
+from runfiles import COLUMNS, last_complete_step, read_dump, read_series, tail
 
 LIGGGHTS = os.environ.get("LIGGGHTS", "liggghts")
 MPIEXEC = os.environ.get("MPIEXEC", "mpirun")
 INPUTS = os.path.abspath(os.environ.get(
     "GRFLOW_INPUTS", os.path.join(os.path.dirname(__file__), "..", "..", "inputs")))
 DECK = os.path.join(INPUTS, "liggghts", "cyclic_shear.liggghts")
-COLUMNS = ("step time reversals direction x_w gamma tau p r_u z_g a_c N_c N_p floaters "
-           "sxx syy szz sxy sxz syz zlo zhi inertial " +
-           " ".join(f"P{c}" for c in range(13))).split()
 # the quick preset with 300 spheres and a larger amplitude: initial
 # liquefaction within a few cycles (N_IL = 6.0 in the build of 2026-11-26)
 SMALL = {"preset": "quick", "N": "300", "tau_amp": "40e3", "n_post": "1",
@@ -71,38 +68,6 @@ def run(outdir, cache, timeout=900, nprocs=1, **var):
                                   + tail(outdir / "log.shear.lammps")
                                   + tail(outdir / "log.prep.lammps"))
     return proc
-
-
-def tail(path, n=3000):
-    return path.read_text(errors="replace")[-n:] if path.exists() else ""
-
-
-def read_series(path):
-    """series.txt through analysis/'s reader, as a list of rows; a repeated
-    step (which that reader drops with a warning) fails the test."""
-    with warnings.catch_warnings():
-        warnings.simplefilter("error")
-        series = ga.read_series(str(path))
-    assert list(series) == COLUMNS
-    return [list(row) for row in zip(*(series[c].tolist() for c in COLUMNS))]
-
-
-def last_complete_step(path):
-    try:
-        lines = path.read_text().splitlines(keepends=True)
-    except FileNotFoundError:
-        return -1
-    for line in reversed(lines):
-        if line.endswith("\n") and line.strip() and not line.startswith("#"):
-            return float(line.split()[0])
-    return -1
-
-
-def read_dump(path, kind):
-    dump = ga.read_dump(str(path))
-    assert dump["item"] == kind
-    cols = list(dump["columns"])
-    return cols, [list(row) for row in zip(*(dump["columns"][c].tolist() for c in cols))]
 
 
 @pytest.fixture(scope="module")

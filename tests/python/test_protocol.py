@@ -20,22 +20,19 @@ import os
 import signal
 import subprocess
 import time
-import warnings
 
 import numpy as np
 import pytest
 
 import grflow_analysis as ga
 from grflow_reference import network_from_snapshot, series_events
+from runfiles import COLUMNS, last_complete_step, read_dump, read_series, tail
 from lmprun import LMP
 
 INPUTS = os.environ.get("GRFLOW_INPUTS",
                         os.path.join(os.path.dirname(__file__), "..", "..", "inputs"))
 DECK = os.path.join(INPUTS, "cyclic_shear.lmp")
 STOCK_DECK = os.path.join(INPUTS, "cyclic_shear_stock.lmp")
-COLUMNS = ("step time reversals direction x_w gamma tau p r_u z_g a_c N_c N_p floaters "
-           "sxx syy szz sxy sxz syz zlo zhi inertial " +
-           " ".join(f"P{c}" for c in range(13))).split()
 SMALL = {"preset": "quick", "N": "500", "n_post": "1", "series_every": "50"}
 
 
@@ -56,42 +53,6 @@ def run(outdir, timeout=900, deck=DECK, **var):
                                   + tail(outdir / "log.shear.lammps")
                                   + tail(outdir / "log.prep.lammps"))
     return proc
-
-
-def tail(path, n=3000):
-    return path.read_text(errors="replace")[-n:] if path.exists() else ""
-
-
-def read_series(path):
-    """series.txt through analysis/'s reader (one parser of the format), as
-    a list of rows: the columns must be the documented ones, and a repeated
-    step, which that reader drops with a warning, fails the test."""
-    with warnings.catch_warnings():
-        warnings.simplefilter("error")
-        series = ga.read_series(str(path))
-    assert list(series) == COLUMNS
-    return [list(row) for row in zip(*(series[c].tolist() for c in COLUMNS))]
-
-
-def last_complete_step(path):
-    """the step of the last complete data line of a series being written
-    (-1 if none yet)"""
-    try:
-        lines = path.read_text().splitlines(keepends=True)
-    except FileNotFoundError:
-        return -1
-    for line in reversed(lines):
-        if line.endswith("\n") and line.strip() and not line.startswith("#"):
-            return float(line.split()[0])
-    return -1
-
-
-def read_dump(path, kind):
-    """a snapshot through analysis/'s reader: (column names, rows)"""
-    dump = ga.read_dump(str(path))
-    assert dump["item"] == kind
-    cols = list(dump["columns"])
-    return cols, [list(row) for row in zip(*(dump["columns"][c].tolist() for c in cols))]
 
 
 @pytest.fixture(scope="module")
