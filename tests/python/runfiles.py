@@ -46,3 +46,18 @@ def read_dump(path, kind):
     assert dump["item"] == kind
     cols = list(dump["columns"])
     return cols, [list(row) for row in zip(*(dump["columns"][c].tolist() for c in cols))]
+
+
+def first_leg_wall_speed(rows):
+    """(h, speed): the wall gap zhi - zlo, which must be the same in every
+    row (the shear stage keeps the height), and the top wall's speed
+    |dx_w/dt| between the first and the last row of the first leg after
+    the start (no reversal between them).  x_w and time are written with 10
+    digits, so the speed is good to about 1e-8."""
+    c = {k: COLUMNS.index(k) for k in ("time", "reversals", "direction", "x_w", "zlo", "zhi")}
+    h = rows[0][c["zhi"]] - rows[0][c["zlo"]]
+    assert all(r[c["zhi"]] - r[c["zlo"]] == h for r in rows), "the wall gap changed"
+    leg = [r for r in rows[1:] if r[c["reversals"]] == rows[1][c["reversals"]]]
+    a, b = leg[0], leg[-1]
+    assert len(leg) >= 5 and a[c["direction"]] == b[c["direction"]], "too short a first leg"
+    return h, abs(b[c["x_w"]] - a[c["x_w"]]) / (b[c["time"]] - a[c["time"]])

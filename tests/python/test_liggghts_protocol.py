@@ -35,7 +35,8 @@ import pytest
 
 import grflow_analysis as ga
 from grflow_reference import network_from_snapshot, series_events
-from runfiles import COLUMNS, last_complete_step, read_dump, read_series, tail
+from runfiles import (COLUMNS, first_leg_wall_speed, last_complete_step, read_dump,
+                      read_series, tail)
 
 LIGGGHTS = os.environ.get("LIGGGHTS", "liggghts")
 MPIEXEC = os.environ.get("MPIEXEC", "mpirun")
@@ -332,6 +333,18 @@ def test_kill_and_resume_gives_one_series(protocol, tmp_path, cache):
             in (killed / "log.shear.lammps").read_text())
 
 
+def test_shear_rate_sets_the_wall_speed(protocol, tmp_path, cache):
+    """-var shear_rate G: the top wall moves at v_x = G h (h the wall gap),
+    whatever v_x says, as in the LAMMPS decks."""
+    src, _ = protocol
+    G = 3.7
+    out = shear_dir(tmp_path / "rate", src)
+    run(out, cache, shear_rate=G, v_x=123.0, **dict(SMALL, stage="shear", max_steps=2000,
+                                                        n_post=1000))
+    h, speed = first_leg_wall_speed(read_series(out / "series.txt"))
+    assert speed == pytest.approx(G * h, rel=1e-7)
+
+
 def test_resume_before_the_first_restart_file(protocol, tmp_path, cache):
     src, _ = protocol
     common = dict(SMALL, stage="shear", restart_every=1000000, max_steps=20000, n_post=1000)
@@ -447,6 +460,7 @@ def test_contact_ratios_reach_particles_and_walls(tmp_path, cache):
     ({"glue_gap": "-1e-4"}, "glue_gap -1e-4 must be >= 0"),
     ({"tau_amp": "0"}, "tau_amp 0 must be > 0"),
     ({"v_x": "0"}, "v_x 0 must be > 0"),
+    ({"shear_rate": "-0.38"}, "shear_rate -0.38 must be >= 0"),
     ({"skin_factor": "0"}, "skin_factor 0 must be > 0"),
     ({"check_every": "0"}, "each must be >= 1"),
     ({"max_cycles": "-1"}, "max_cycles -1 must be >= 0"),

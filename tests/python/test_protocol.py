@@ -26,7 +26,8 @@ import pytest
 
 import grflow_analysis as ga
 from grflow_reference import network_from_snapshot, series_events
-from runfiles import COLUMNS, last_complete_step, read_dump, read_series, tail
+from runfiles import (COLUMNS, first_leg_wall_speed, last_complete_step, read_dump,
+                      read_series, tail)
 from lmprun import LMP
 
 INPUTS = os.environ.get("GRFLOW_INPUTS",
@@ -391,6 +392,21 @@ def test_normal_force_reaches_pair_and_walls(protocol, tmp_path):
     assert rows["clipped"][-1] != rows["unclipped"][-1]
 
 
+def test_shear_rate_sets_the_wall_speed(protocol, tmp_path):
+    """-var shear_rate G: the top wall moves at v_x = G h, h the wall gap
+    (zhi - zlo, constant in the shear stage), whatever v_x says.  Checked
+    on the wall's own path in the series."""
+    src, _ = protocol
+    G = 3.7
+    out = shear_dir(tmp_path / "rate", src)
+    run(out, shear_rate=G, v_x=123.0, **dict(SMALL, stage="shear", max_steps=2000,
+                                                 n_post=1000))
+    h, speed = first_leg_wall_speed(read_series(out / "series.txt"))
+    assert speed == pytest.approx(G * h, rel=1e-7)
+    said = re.search(r"GRFLOW shear: v_x = (\S+) m/s", (out / "log.shear.lammps").read_text())
+    assert float(said.group(1)) == pytest.approx(G * h, rel=1e-9)   # 10 digits printed
+
+
 def test_resume_before_the_first_restart_file(protocol, tmp_path):
     """A shear stage killed before its first periodic restart file resumes
     from shear.restart.0 (the copy of prep.restart the stage makes when it
@@ -590,6 +606,8 @@ def test_contact_ratios_reach_particles_and_walls(tmp_path, deck):
     ({"glue_gap": "-1e-4"}, "glue_gap -1e-4 must be >= 0"),
     ({"tau_amp": "0"}, "tau_amp 0 must be > 0"),
     ({"v_x": "0"}, "v_x 0 must be > 0"),
+    ({"shear_rate": "-0.38"}, "shear_rate -0.38 must be >= 0"),
+    ({"shear_rate": "fast"}, "ERROR: not a number: shear_rate 'fast'"),
     ({"skin_factor": "0"}, "skin_factor 0 must be > 0"),
     ({"check_every": "0"}, "each must be >= 1"),
     ({"max_cycles": "-1"}, "max_cycles -1 must be >= 0"),
