@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The Python of GRFLOW's analysis (analysis/, the package grflow_analysis
-# with the commands grflow-figures and grflow-curve): one interpreter that
+# with the commands grflow-figures, grflow-curve and grflow-study): one interpreter that
 # imports numpy and matplotlib (Debian's python3-numpy and
 # python3-matplotlib), and a venv on it, made with --system-site-packages
 # so that it sees them, into which analysis/ is installed offline
@@ -83,8 +83,8 @@ else
   "${pip[@]}" "$tmp"
 fi
 # the package and its dependencies, from the venv, outside the source tree
-(cd / && "$venv/bin/python" -c "import grflow_analysis.figures, grflow_analysis.curve") || {
+(cd / && "$venv/bin/python" -c "import grflow_analysis.figures, grflow_analysis.curve, grflow_analysis.study") || {
   echo "ERROR: grflow_analysis does not import in $venv" >&2; exit 1; }
 printf '%s\n' "$want" > "$stamp"
 echo "python-env: $venv (on $python): grflow_analysis, $venv/bin/grflow-figures," \
-  "$venv/bin/grflow-curve"
+  "$venv/bin/grflow-curve, $venv/bin/grflow-study"

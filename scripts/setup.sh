@@ -5,8 +5,8 @@
 # (root) or ~/.local; and the analysis (analysis/, the package
 # grflow_analysis) in a venv under that prefix (lib/grflow/python, made by
 # scripts/python-env.sh on the Python the CMake configure chose and
-# recorded as GRFLOW_ANALYSIS_PYTHON), with its commands grflow-figures
-# and grflow-curve linked into the prefix's bin, and grflow-python, that
+# recorded as GRFLOW_ANALYSIS_PYTHON), with its commands grflow-figures,
+# grflow-curve and grflow-study linked into the prefix's bin, and grflow-python, that
 # venv's Python.  Then checks the
 # installed lmp, plugin, module and commands, runs the paper's protocol
 # with the quick preset on 2 MPI ranks (runs/quick, about a minute) and
@@ -48,7 +48,7 @@ PYTHONPATH="$prefix/$pydir${PYTHONPATH:+:$PYTHONPATH}" "$python" -c \
 assert l.has_style('pair', 'granular/grflow'); print('python module: lammps', l.version())"
 venv=$prefix/lib/grflow/python
 GRFLOW_ANALYSIS_PYTHON=$python scripts/python-env.sh "$venv"
-for cmd in grflow-figures grflow-curve; do
+for cmd in grflow-figures grflow-curve grflow-study; do
   ln -sf "$venv/bin/$cmd" "$prefix/bin/$cmd"
 done
 # that Python, for scripts that import grflow_analysis (bench/*.py): a
@@ -58,7 +58,7 @@ chmod 755 "$prefix/bin/grflow-python"
 "$prefix/bin/grflow-figures" --help > /dev/null || { echo "ERROR: grflow-figures does not run"; exit 1; }
 (cd / && "$prefix/bin/grflow-python" -c "import grflow_analysis") \
   || { echo "ERROR: grflow-python does not import grflow_analysis"; exit 1; }
-echo "analysis: $prefix/bin/grflow-figures, grflow-curve, grflow-python (Python $python," \
+echo "analysis: $prefix/bin/grflow-figures, grflow-curve, grflow-study, grflow-python (Python $python," \
   "grflow_analysis in $venv)"
 case "$prefix" in
   /usr/local) ;;

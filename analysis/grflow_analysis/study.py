@@ -1,0 +1,201 @@
+# GRFLOW analysis: a study of shear-stage settings over seeds.
+# Part of GRFLOW, distributed under the GNU General Public License v2
+# (see LICENSE at the top of the repository).
+"""A study of shear-stage settings over seeds (workflows/physics_study.smk).
+
+    grflow-study OUT --settings NAME [NAME ...] --seeds S [S ...]
+
+OUT/seed<S>/<NAME>/ is the run of setting NAME from seed S's preparation
+(series.txt, events.txt, prep.json, run.json).  For every run the
+summary of grflow_analysis gives the quantities of QUANTITIES (the knee
+and the 5th percentile of z_g as grflow-figures --knee --zg-percentile 5
+gives them), and :func:`flickers` counts the exits that are flickers.
+Per setting: the mean and the sample standard deviation over the seeds
+(n - 1 in the denominator), and, against the first setting (the
+baseline), the mean and standard deviation of the seed-by-seed
+difference (setting minus baseline, over the seeds that have both): the
+preparation is the same, so the difference is the setting's effect plus
+the scatter of the shear stage alone.  A quantity a run did not reach
+(no liquefaction, no exit) is left out of that setting's statistics,
+and the table gives how many runs it has.  Writes OUT/study.json (every
+run and every statistic) and OUT/study.md.  Exit status 2 if a run
+directory or one of its files is missing.
+"""
+import argparse
+import json
+import math
+import os
+import sys
+
+import numpy as np
+
+import grflow_analysis as ga
+
+# (key, heading, how it is made) -- the summary's entries, or this module's
+QUANTITIES = [
+    ("N_IL", "N_IL", "cycles to initial liquefaction (fix grflow/shear's)"),
+    ("n_exits", "exits", "number of exits (r_u falls below ru_liq after initial liquefaction)"),
+    ("n_flickers", "flickers", "exits whose sample is back at r_u >= ru_liq before the next "
+     "reversal (flickers)"),
+    ("z_g_exit_mean", "z_g at exits", "mean z_g at the exits of the run"),
+    ("z_g_inflection_mean", "z_g at inflection",
+     "mean z_g at the inflection of the logistic fitted to z_g(N) around each exit"),
+    ("z_g_knee_mean", "z_g at knee", "mean z_g at the knee of the same logistic"),
+    ("z_g_post_IL_min", "smallest z_g", "smallest z_g after initial liquefaction"),
+    ("z_g_post_IL_p5", "z_g 5th pct", "5th percentile of z_g after initial liquefaction"),
+    ("z_g_post_IL_max", "largest z_g", "largest z_g after initial liquefaction"),
+    ("inertial_median_post_IL", "median I", "median inertial number after initial "
+     "liquefaction (rows with p > 0)"),
+    ("inertial_max", "largest I", "largest inertial number (rows with p > 0)"),
+    ("p_min_post_IL", "smallest p (Pa)", "smallest p after initial liquefaction"),
+]
+PERCENTILE = 5.0
+
+
+def flickers(series, events, ru_liq):
+    """The exits after which the sample is back at r_u >= ru_liq before the
+    fix's next reversal (the reversals column does not change between the
+    exit row and the next entry row): the stress never built up to
+    tau_amp, so the exit is a flicker of r_u about ru_liq, not a recovery
+    of the sample.  Returns (number of exits, number of flickers)."""
+    liq = ga.liquefaction(series, events, ru_liq)
+    rev = series["reversals"]
+    entries = np.asarray(liq["entries"], dtype=int)
+    n = 0
+    for e in liq["exits"]:
+        later = entries[entries > e]
+        if later.size and rev[later[0]] == rev[e]:
+            n += 1
+    return len(liq["exits"]), n
+
+
+def run_values(run_dir):
+    """The QUANTITIES of one run (floats; None where not reached)."""
+    for name in ("series.txt", "events.txt", "prep.json", "run.json"):
+        if not os.path.exists(os.path.join(run_dir, name)):
+            raise FileNotFoundError("%s: no %s" % (run_dir, name))
+    series = ga.read_series(os.path.join(run_dir, "series.txt"))
+    prep = ga.read_prep(os.path.join(run_dir, "prep.json"))
+    events = ga.run_events(run_dir, series)
+    summ = ga.summary(series, prep, events, knee=True, percentile=PERCENTILE)
+    entries = {e["name"]: e["measured"] for e in summ["entries"]}
+    for e in summ["definitions"]["entries"]:
+        entries[e["name"]] = e["measured"]
+    entries["z_g_post_IL_p5"] = entries.get("z_g_post_IL_p%g" % PERCENTILE)
+    ru_liq, _ = ga.protocol(prep)
+    entries["n_exits"], entries["n_flickers"] = flickers(series, events, ru_liq)
+    if not isinstance(entries["N_IL"], float):
+        entries["n_exits"] = entries["n_flickers"] = None
+    out = {}
+    for key, _, _ in QUANTITIES:
+        v = entries.get(key)
+        out[key] = float(v) if isinstance(v, (int, float)) and math.isfinite(v) else None
+    with open(os.path.join(run_dir, "run.json")) as f:
+        meta = json.load(f)
+    out["e"] = float(prep["e"]) if ga._is_number(prep.get("e")) else None
+    out["z_g_prep"] = float(prep["z_g"]) if ga._is_number(prep.get("z_g")) else None
+    out["N_end"] = float(summ["N_end"]) if ga._is_number(summ.get("N_end")) else None
+    out["shear_vars"] = meta.get("shear_vars")
+    return out
+
+
+def stats(values):
+    """(mean, sample sd or None, n) of the values that are not None."""
+    v = [x for x in values if x is not None]
+    if not v:
+        return None, None, 0
+    return (float(np.mean(v)), float(np.std(v, ddof=1)) if len(v) > 1 else None, len(v))
+
+
+def study(out, settings, seeds):
+    runs = {s: {seed: run_values(os.path.join(out, "seed%d" % seed, s)) for seed in seeds}
+            for s in settings}
+    base = settings[0]
+    table = {}
+    for s in settings:
+        row = {}
+        for key, _, _ in QUANTITIES + [("e", "", ""), ("z_g_prep", "", "")]:
+            mean, sd, n = stats([runs[s][seed][key] for seed in seeds])
+            diffs = [runs[s][seed][key] - runs[base][seed][key] for seed in seeds
+                     if runs[s][seed][key] is not None and runs[base][seed][key] is not None]
+            dmean, dsd, dn = stats(diffs)
+            row[key] = {"mean": mean, "sd": sd, "n": n, "diff_mean": dmean, "diff_sd": dsd,
+                        "diff_n": dn}
+        table[s] = row
+    return {"out": out, "settings": settings, "baseline": base, "seeds": seeds,
+            "shear_vars": {s: runs[s][seeds[0]]["shear_vars"] for s in settings},
+            "runs": {s: {str(k): v for k, v in r.items()} for s, r in runs.items()},
+            "table": table,
+            "quantities": [{"key": k, "heading": h, "how": w} for k, h, w in QUANTITIES]}
+
+
+def _num(x, digits=3):
+    if x is None:
+        return "-"
+    if float(x).is_integer() and abs(x) < 1e4:
+        return "%d" % x
+    if x != 0 and (abs(x) < 1e-2 or abs(x) >= 1e4):
+        return "%.*e" % (digits - 1, x)
+    return "%.*g" % (digits + 1, x) if abs(x) >= 1 else "%.*f" % (digits, x)
+
+
+def _cell(mean, sd, n):
+    if mean is None:
+        return "- (0)"
+    return "%s +- %s (%d)" % (_num(mean), _num(sd), n) if sd is not None else \
+        "%s (%d)" % (_num(mean), n)
+
+
+def markdown(d):
+    lines = ["# Study: %s" % d["out"], "",
+             "Seeds %s; baseline `%s`.  Each cell: mean +- sample sd over the seeds (runs "
+             "counted); below it, the seed-by-seed difference from the baseline, "
+             "mean +- sd (pairs counted)." % (", ".join(str(s) for s in d["seeds"]),
+                                               d["baseline"]), "",
+             "| setting | shear-stage -var | e | z_g after preparation |",
+             "| --- | --- | --- | --- |"]
+    for s in d["settings"]:
+        t = d["table"][s]
+        lines.append("| %s | `%s` | %s | %s |" % (s, d["shear_vars"][s] or "",
+                                                  _cell(t["e"]["mean"], t["e"]["sd"], t["e"]["n"]),
+                                                  _cell(t["z_g_prep"]["mean"], t["z_g_prep"]["sd"],
+                                                        t["z_g_prep"]["n"])))
+    for q in d["quantities"]:
+        k = q["key"]
+        lines += ["", "## %s" % q["heading"], "", q["how"] + ".", "",
+                  "| setting | " + " | ".join("seed %d" % s for s in d["seeds"]) +
+                  " | mean +- sd (n) | minus baseline |",
+                  "| --- |" + " --- |" * (len(d["seeds"]) + 2)]
+        for s in d["settings"]:
+            t = d["table"][s][k]
+            per = [_num(d["runs"][s][str(seed)][k]) for seed in d["seeds"]]
+            diff = "-" if s == d["baseline"] else _cell(t["diff_mean"], t["diff_sd"],
+                                                        t["diff_n"])
+            lines.append("| %s | %s | %s | %s |" % (s, " | ".join(per),
+                                                     _cell(t["mean"], t["sd"], t["n"]), diff))
+    return "\n".join(lines) + "\n"
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(prog="grflow-study", description=__doc__.split("\n\n")[0])
+    ap.add_argument("out", help="study directory (OUT/seed<S>/<NAME>/ are the runs)")
+    ap.add_argument("--settings", nargs="+", required=True,
+                    help="setting names, the baseline first")
+    ap.add_argument("--seeds", nargs="+", type=int, required=True)
+    args = ap.parse_args(argv)
+    try:
+        d = study(args.out, args.settings, args.seeds)
+    except FileNotFoundError as e:
+        print("grflow-study: %s" % e, file=sys.stderr)
+        return 2
+    with open(os.path.join(args.out, "study.json"), "w") as f:
+        json.dump(d, f, indent=1)
+    md = markdown(d)
+    with open(os.path.join(args.out, "study.md"), "w") as f:
+        f.write(md)
+    print(md)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,173 @@
+"""workflows/physics_study.smk and grflow-study (grflow_analysis.study): a
+study of shear-stage settings over seeds, from one preparation per seed.
+
+- flickers: an exit counts as one when the sample is back at
+  r_u >= ru_liq before the next reversal (a series made by hand);
+- the paired statistics against the baseline (values made by hand);
+- a tiny study (300 spheres, 2 seeds, 2 settings) runs end to end: each
+  setting is sheared from the seed's one preparation, and the table has
+  every run;
+- killed during a shear run, the workflow run again resumes that run from
+  its restart file (the decks' -var resume yes) and ends with one series,
+  every step once;
+- a bad config is refused before anything runs.
+
+Environment: LMP (lmp binary).  grflow-study, which the workflow runs, is
+the set-up's, beside the Python that runs the tests (scripts/python-env.sh).
+"""
+import json
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import time
+
+import numpy as np
+import pytest
+
+from grflow_analysis import study
+from runfiles import read_series
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+SMK = os.path.join(ROOT, "workflows", "physics_study.smk")
+BIN = os.path.dirname(sys.executable)       # grflow-study, grflow-figures
+ENV = dict(os.environ, PATH=BIN + os.pathsep + os.environ.get("PATH", ""), MPLBACKEND="Agg")
+LMP = os.environ.get("LMP", "lmp")
+SNAKEMAKE = shutil.which("snakemake")
+needs_snakemake = pytest.mark.skipif(SNAKEMAKE is None, reason="needs snakemake (Debian)")
+
+
+def test_flickers_are_exits_without_a_reversal():
+    # liquefied from row 1 (step_IL 100); exit at row 3, back at row 4
+    # with no reversal between (a flicker); exit at row 6, a reversal at
+    # row 7, back at row 8 (a recovery)
+    ru = np.array([0.5, 0.995, 0.995, 0.98, 0.995, 0.995, 0.9, 0.5, 0.995, 0.995])
+    rev = np.array([0, 0, 0, 0, 0, 0, 0, 1, 1, 1])
+    series = {"step": np.arange(10) * 100.0, "r_u": ru, "reversals": rev}
+    events = {"step_IL": 100}
+    assert study.flickers(series, events, 0.99) == (2, 1)
+    # an exit that has not come back by the end of the series is no flicker
+    series["r_u"] = ru[:8]
+    series["step"] = series["step"][:8]
+    series["reversals"] = rev[:8]
+    assert study.flickers(series, events, 0.99) == (2, 1)
+    series["reversals"] = np.zeros(8)
+    assert study.flickers(series, events, 0.99) == (2, 1)
+
+
+def test_statistics_by_hand():
+    assert study.stats([1.0, None, 3.0]) == (2.0, pytest.approx(2 ** 0.5), 2)
+    assert study.stats([None]) == (None, None, 0)
+    assert study.stats([4.0]) == (4.0, None, 1)
+
+
+def planned(proc):
+    """{rule: job count} from the "Job stats" table of a dry run."""
+    jobs = {}
+    for line in (proc.stdout + proc.stderr).splitlines():
+        parts = line.split()
+        if len(parts) == 4 and all(p.isdigit() for p in parts[1:]):
+            jobs[parts[0]] = int(parts[1])
+    return jobs
+
+
+def snakemake(args, cwd, check=True):
+    proc = subprocess.run([SNAKEMAKE, "-s", SMK] + args, cwd=cwd, capture_output=True,
+                          text=True, timeout=900, env=ENV)
+    if check:
+        assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
+    return proc
+
+
+def config(out, **more):
+    settings = {"base": "tau_amp 45e3", "lower": "tau_amp 40e3"}
+    c = {"seeds": "[1,2]", "N": "300", "preset": "quick", "prep_vars": "",
+         "settings": json.dumps(settings), "out": str(out), "lmp": LMP,
+         "vars": "n_post 1 series_every 50", "max_cycles": "20"}
+    c.update(more)
+    return ["--config"] + [f"{k}={v}" for k, v in c.items()]
+
+
+@needs_snakemake
+def test_tiny_study_end_to_end(tmp_path):
+    out = tmp_path / "study"
+    snakemake(["--cores", "2"] + config(out), tmp_path)
+    d = json.loads((out / "study.json").read_text())
+    assert d["settings"] == ["base", "lower"] and d["baseline"] == "base"
+    for s in ("base", "lower"):
+        # one preparation per seed, shared by the settings
+        for seed in (1, 2):
+            assert (out / f"seed{seed}" / s / "prep.restart").resolve() == \
+                (out / f"seed{seed}" / "prep" / "prep.restart").resolve()
+        # a run-out (no liquefaction by max_cycles) has no N_IL and is left
+        # out of the statistics, which count the runs they have
+        n_il = [d["runs"][s][str(seed)]["N_IL"] for seed in (1, 2)]
+        for seed, n in zip((1, 2), n_il):
+            log = (out / f"seed{seed}" / s / "log.shear.lammps").read_text()
+            done = [x for x in log.splitlines() if x.startswith("GRFLOW shear: done at step")]
+            assert len(done) == 1
+            assert (n is None) == done[0].endswith("initial liquefaction not reached (run-out)")
+        liquefied = [n for n in n_il if n is not None]
+        assert liquefied, "no run liquefied: raise tau_amp"
+        assert d["table"][s]["N_IL"]["n"] == len(liquefied)
+        assert d["table"][s]["N_IL"]["mean"] == pytest.approx(np.mean(liquefied))
+    # the baseline's difference from itself is 0
+    assert d["table"]["base"]["z_g_prep"]["diff_mean"] == 0.0
+    # the settings reached the runs: tau_amp in the shear log
+    log = (out / "seed1" / "lower" / "log.shear.lammps").read_text()
+    assert "tau_amp = 40e3 Pa" in log
+    md = (out / "study.md").read_text()
+    assert "## N_IL" in md and "| lower |" in md
+    # a run directory is one grflow-figures reads
+    proc = subprocess.run(["grflow-figures", str(out / "seed2" / "lower")],
+                          capture_output=True, text=True, env=ENV, timeout=600)
+    assert proc.returncode == 0, proc.stdout[-2000:] + proc.stderr[-2000:]
+
+
+@needs_snakemake
+def test_killed_study_resumes_the_shear_run(tmp_path):
+    """snakemake killed (SIGKILL, with its lmp) after a shear run wrote a
+    restart file; the same command (after --unlock) resumes that run from
+    the file rather than starting it again, and the series has every step
+    once."""
+    out = tmp_path / "study"
+    cfg = config(out, seeds="[1]", settings=json.dumps({"base": "tau_amp 30e3"}),
+                 vars="n_post 1 series_every 50 restart_every 2000")
+    proc = subprocess.Popen([SNAKEMAKE, "-s", SMK, "--cores", "1"] + cfg, cwd=tmp_path,
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                            start_new_session=True, env=ENV)
+    run = out / "seed1" / "base"
+    deadline = time.time() + 600
+    while not ((run / "shear.restart.4000.cksum").exists()):
+        assert proc.poll() is None, "the study ended before it was killed"
+        assert time.time() < deadline
+        time.sleep(0.05)
+    os.killpg(proc.pid, signal.SIGKILL)
+    proc.wait()
+    assert not (run / "run.json").exists()
+    snakemake(["--unlock"] + cfg, tmp_path)
+    plan = snakemake(["-n", "--cores", "1"] + cfg, tmp_path)
+    assert planned(plan) == {"all": 1, "shear": 1, "study": 1, "total": 3}, plan.stdout
+    snakemake(["--cores", "1"] + cfg, tmp_path)
+    log = (run / "log.shear.lammps").read_text()
+    assert "GRFLOW shear: resuming at step" in log
+    assert "GRFLOW shear: done" in log
+    steps = [r[0] for r in read_series(run / "series.txt")]
+    assert steps == sorted(set(steps))
+    assert steps[0] == 0 and all(b - a == 50 for a, b in zip(steps, steps[1:]))
+    assert json.loads((out / "study.json").read_text())["runs"]["base"]["1"]["N_IL"] > 0
+
+
+@needs_snakemake
+@pytest.mark.parametrize("bad,expect", [
+    ("settings={\"a/b\": \"\"}", "cannot name a directory"),
+    ("settings={\"x\": \"cundall_l\"}", "NAME VALUE"),
+    ("preset=fast", "preset fast"),
+    ("prep_vars=calibrate", "NAME VALUE"),
+])
+def test_bad_config_is_refused(tmp_path, bad, expect):
+    proc = snakemake(["-n", "--cores", "1", "--config", bad, f"out={tmp_path}"], tmp_path,
+                     check=False)
+    assert proc.returncode != 0
+    assert expect in proc.stdout + proc.stderr
