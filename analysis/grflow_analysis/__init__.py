@@ -654,20 +654,23 @@ def logistic_knee(n0, w, a, b, fraction=KNEE_FRACTION):
 
 # ---------------------------------------------------------------- summary
 
-# The paper's values (paper/isochoric-cyclic-shearing.md), with the tolerance
-# used to call a measured value a match.  comparison "abs": |measured - paper|
-# <= tolerance; "max": measured <= paper; "each": every element of a list
-# within tolerance.  paper None: the paper gives no number.
+# The paper's values (paper/isochoric-cyclic-shearing.md) and how a
+# measured value is compared with them.  comparison "abs": |measured -
+# paper| <= tolerance, for the protocol's inputs (tolerance 0); "max":
+# measured <= paper, for the paper's bounds; "diff": the paper gives the
+# number without a tolerance, so there is no match, only the difference
+# measured - paper (of each element, for a list).  paper None: the paper
+# gives no number.
 PAPER = {
     "N_particles": (8000, 0, "abs",
                     "Sec. 2 / Fig. 1: 'a sample composed of 8000 particles'"),
-    "e_prep": (0.647, 0.01, "abs",
+    "e_prep": (0.647, None, "diff",
                "Sec. 2: 'an isotropically compressed sample of 8000 spheres with void "
                "ratio e = 0.647 (medium dense) under a mean pressure of 100 kPa'"),
-    "p_prep": (100.0e3, 5.0e3, "abs",
+    "p_prep": (100.0e3, None, "diff",
                "Sec. 2: '... under a mean pressure of 100 kPa'; Sec. 3: 'moves "
                "cyclically leftward from p = 100 kPa'"),
-    "z_g_prep": (4.76, 0.15, "abs",
+    "z_g_prep": (4.76, None, "diff",
                  "Sec. 4: 'z_g decreases from its initial value z_g ~ 4.76'"),
     "tau_amp": (25.0e3, 0.0, "abs", "Sec. 3: 'with tau^amp = 25 kPa'"),
     "N_IL": (None, None, None, "Sec. 3 defines N_IL; no value is given"),
@@ -691,24 +694,24 @@ PAPER = {
     "a_c_change_C1_C2": (None, None, None,
                          "Sec. 4: between C1 and C2 'a_c is nearly constant' (isotropic "
                          "loss of contacts); no number given"),
-    "z_g_post_IL_min": (1.5, 0.5, "abs",
+    "z_g_post_IL_min": (1.5, None, "diff",
                         "Sec. 4: z_g 'fluctuates significantly down to values as low "
                         "as 1.5'"),
-    "z_g_inflections": (3.6, 0.2, "each",
+    "z_g_inflections": (3.6, None, "diff",
                         "Sec. 4: 'The horizontal dashed line for z_g = 3.6 corresponds to "
                         "the inflection point of z_g as a function of N, coinciding with the "
                         "exit of liquefaction state (C0' and C2')'"),
-    "z_g_inflection_mean": (3.6, 0.2, "abs", "as z_g_inflections"),
+    "z_g_inflection_mean": (3.6, None, "diff", "as z_g_inflections"),
     "static_redundancy_post_IL_max": (0.0, 0.0, "max",
                                       "Sec. 4: after initial liquefaction z_g 'stays below "
                                       "4.0 and fluctuates ... with a negative static "
                                       "redundancy'"),
     "n_exits": (None, None, None, "no number given"),
-    "z_g_at_exits": (3.6, 0.2, "each",
+    "z_g_at_exits": (3.6, None, "diff",
                      "Sec. 4: 'z_g = 3.6 ... coinciding with the exit of liquefaction "
                      "state (C0' and C2')'; Sec. 5: 'exiting the liquefaction state at "
                      "the coordination number of 3.6'"),
-    "z_g_exit_mean": (3.6, 0.2, "abs", "as z_g_at_exits"),
+    "z_g_exit_mean": (3.6, None, "diff", "as z_g_at_exits"),
     "z_g_exit_std": (None, None, None, "no number given"),
     "inertial_max": (0.025, 0.0, "max",
                      "Sec. 2: 'Even in the liquefaction state, I does not increase "
@@ -768,7 +771,7 @@ def inertial_stats(series, onset):
 def _match(measured, paper, tol, comparison):
     if isinstance(measured, str):
         return False
-    if paper is None or measured is None:
+    if paper is None or measured is None or comparison == "diff":
         return None
     if comparison == "each":
         return bool(len(measured) > 0 and all(abs(m - paper) <= tol + 1e-12 for m in measured))
@@ -777,12 +780,47 @@ def _match(measured, paper, tol, comparison):
     return bool(abs(measured - paper) <= tol + 1e-12 * max(1.0, abs(paper)))
 
 
+def _difference(measured, paper):
+    """measured - paper (a list for a list), None where either is no number"""
+    if paper is None or isinstance(measured, str) or measured is None:
+        return None
+    if isinstance(measured, (list, tuple, np.ndarray)):
+        return [float(m) - paper for m in measured]
+    return float(measured) - paper
+
+
 def _entry(name, description, unit, measured):
     paper, tol, comparison, source = PAPER[name]
     return {"name": name, "description": description, "unit": unit,
             "measured": measured, "paper": paper, "tolerance": tol,
             "comparison": comparison, "match": _match(measured, paper, tol, comparison),
-            "paper_source": source}
+            "difference": _difference(measured, paper), "paper_source": source}
+
+
+def tolerance_cell(e):
+    """The tolerance column of a summary table for entry e."""
+    if e["comparison"] == "diff":
+        return "no tolerance given"
+    if e["tolerance"] is None:
+        return "-"
+    if e["comparison"] == "max":
+        return "measured <= paper"
+    return ("each within %s" if e["comparison"] == "each" else "+-%s") % _fmt(
+        e["tolerance"], e["unit"])
+
+
+def match_cell(e):
+    """The match column: yes/no, or the difference where the paper gives no
+    tolerance (the range of the differences for a list)."""
+    if e["comparison"] == "diff":
+        d = e.get("difference")
+        if d is None:
+            return "-"
+        if isinstance(d, list):
+            return "difference %s to %s" % (_fmt(min(d), e["unit"]), _fmt(max(d), e["unit"])) \
+                if d else "-"
+        return "difference %s" % _fmt(d, e["unit"])
+    return {True: "yes", False: "no", None: "-"}[e["match"]]
 
 
 def _num(x):
@@ -1000,14 +1038,9 @@ def summary_markdown(s):
              "| --- | --- | --- | --- | --- |"]
     for e in s["entries"]:
         u = e["unit"]
-        tol = "-" if e["tolerance"] is None else (
-            "measured <= paper" if e["comparison"] == "max" else
-            ("each within %s" if e["comparison"] == "each" else "+-%s")
-            % _fmt(e["tolerance"], u))
-        match = {True: "yes", False: "no", None: "-"}[e["match"]]
         lines.append("| %s (%s) | %s | %s | %s | %s |" % (
             e["name"], e["description"], _fmt(e["measured"], u), _fmt(e["paper"], u),
-            tol, match))
+            tolerance_cell(e), match_cell(e)))
     c = s["cycle_C"]
     lines.append("")
     if c["cycle"] is None:

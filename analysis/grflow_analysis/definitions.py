@@ -590,14 +590,9 @@ def definitions_markdown(d):
              "| --- | --- | --- | --- | --- |"]
     for e in d["entries"]:
         u = e["unit"]
-        tol = "-" if e["tolerance"] is None else (
-            "measured <= paper" if e["comparison"] == "max" else
-            ("each within %s" if e["comparison"] == "each" else "+-%s")
-            % ga._fmt(e["tolerance"], u))
-        match = {True: "yes", False: "no", None: "-"}[e["match"]]
         lines.append("| %s (%s) | %s | %s | %s | %s |" % (
             e["name"], e["description"], ga._fmt(e["measured"], u), ga._fmt(e["paper"], u),
-            tol, match))
+            ga.tolerance_cell(e), ga.match_cell(e)))
     ov = d.get("overlaps")
     if ov:
         lines += ["", "z_g counting all overlaps at the snapshot states of cycle C "

@@ -480,6 +480,30 @@ def test_match_rules():
     assert ga._match([3.5, 3.7], 3.6, 0.2, "each") is True
     assert ga._match("not reached", None, None, None) is False
     assert ga._match(2.0, None, None, None) is None
+    # the paper's number without a tolerance: no match, the difference
+    assert ga._match(3.545, 3.6, None, "diff") is None
+    assert ga._match(3.6, 3.6, None, "diff") is None
+
+
+def test_numbers_without_a_tolerance_show_the_difference():
+    """Where the paper gives a number without a tolerance the summary calls
+    nothing a match; it gives measured - paper (issue 30: no tolerance is
+    chosen to make a result match)."""
+    given = {"e_prep", "p_prep", "z_g_prep", "z_g_post_IL_min", "z_g_inflections",
+             "z_g_inflection_mean", "z_g_at_exits", "z_g_exit_mean"}
+    assert {k for k, v in ga.PAPER.items() if v[2] == "diff"} == given
+    for k, (paper, tol, comparison, _) in ga.PAPER.items():
+        # a tolerance is left only on the protocol's inputs, and it is 0
+        assert comparison in (None, "diff", "max") or tol == 0, k
+    e = ga._entry("z_g_exit_mean", "mean", "-", 3.545)
+    assert e["match"] is None and e["difference"] == pytest.approx(-0.055, abs=1e-12)
+    assert ga.tolerance_cell(e) == "no tolerance given"
+    assert ga.match_cell(e).startswith("difference -0.05")
+    e = ga._entry("z_g_at_exits", "each", "-", [3.5, 3.7])
+    assert e["difference"] == pytest.approx([-0.1, 0.1], abs=1e-12)
+    assert ga.match_cell(e).startswith("difference -0.1") and e["match"] is None
+    e = ga._entry("z_g_exit_mean", "mean", "-", ga.NOT_REACHED)
+    assert e["match"] is False and e["difference"] is None and ga.match_cell(e) == "-"
 
 
 def test_peak_ac_per_cycle(liquefied_run):
@@ -501,13 +525,15 @@ def test_summary_liquefied(liquefied_run):
     summ = ga.summary(s, ga.read_prep(os.path.join(root, "prep.json")), ga.run_events(root, s))
     e = entries(summ)
     assert e["e_prep"]["measured"] == 0.650 and e["e_prep"]["paper"] == 0.647
-    assert e["e_prep"]["match"] is True
-    assert e["z_g_prep"]["measured"] == 4.80 and e["z_g_prep"]["match"] is True
+    assert e["e_prep"]["match"] is None
+    assert e["e_prep"]["difference"] == pytest.approx(0.003, abs=1e-12)
+    assert e["z_g_prep"]["measured"] == 4.80 and e["z_g_prep"]["match"] is None
     assert e["N_IL"]["measured"] == pytest.approx(4.4, abs=1e-12)
     assert e["N_IL"]["paper"] is None and e["N_IL"]["match"] is None
-    assert e["z_g_post_IL_min"]["measured"] == ZG_MIN and e["z_g_post_IL_min"]["match"]
+    assert e["z_g_post_IL_min"]["measured"] == ZG_MIN
+    assert e["z_g_post_IL_min"]["difference"] == pytest.approx(ZG_MIN - 1.5, abs=1e-12)
     assert e["z_g_post_IL_max"]["measured"] == 3.9 and e["z_g_post_IL_max"]["match"]
-    assert e["z_g_at_exits"]["measured"] == EXIT_ZG and e["z_g_at_exits"]["match"]
+    assert e["z_g_at_exits"]["measured"] == EXIT_ZG and e["z_g_at_exits"]["match"] is None
     assert e["z_g_exit_mean"]["measured"] == pytest.approx(3.6, abs=1e-12)
     assert e["z_g_exit_std"]["measured"] == pytest.approx(np.std(EXIT_ZG), abs=1e-12)
     assert e["n_exits"]["measured"] == 6
@@ -582,7 +608,7 @@ def test_summary_never_liquefied(dry_run):
                  "z_g_at_exits", "z_g_exit_mean", "z_g_exit_std"):
         assert e[name]["measured"] == "not reached", name
         assert e[name]["match"] is False, name
-    assert e["e_prep"]["match"] is True
+    assert e["e_prep"]["difference"] is not None
     assert summ["cycle_C"]["cycle"] is None
     # without prep.json the preparation values are not available, never a match
     summ = ga.summary(s, None, ga.run_events(root, s))
