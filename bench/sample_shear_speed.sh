@@ -1,30 +1,44 @@
 #!/usr/bin/env bash
-# How long a shear stage takes on 1 core and on 2 MPI ranks, from the
-# restart files of one run of it: from prep.restart and from every
-# shear.restart.<K> of RUNDIR, the real deck runs NSTEPS steps on 1 core
-# and on 2 ranks (one after the other, on an otherwise idle machine), and
-# the stage's time is the sum over the intervals between restart files of
-# interval / (steps per second at its start).  The speed changes along the
+# How long a shear stage takes in several settings (variants; default: 1
+# core and 2 MPI ranks), from the restart files of one run of it: from
+# prep.restart and from every shear.restart.<K> of RUNDIR, the real deck
+# runs NSTEPS steps in each variant (one after the other, on an otherwise
+# idle machine), and the stage's time is the sum over the intervals
+# between restart files of interval / (steps per second at its start).  The speed changes along the
 # stage (the liquefied sample has few contacts), so one sample from its
 # start would not do.  Nor do a few short ones: the speed also changes
 # twofold within a post-liquefaction cycle, and 5 samples of 20000 steps
 # overestimated the paper case's 2-rank time by 30% (doc/studies/shear-stage-sampling.md).
 # Check the sum for the run's own rank count against its measured time.
-#   bash bench/sample_shear_speed.sh RUNDIR [NSTEPS]     # default 20000
+#   bash bench/sample_shear_speed.sh RUNDIR [NSTEPS [VARIANT ...]]   # default 20000
+# VARIANT: "NAME|NP|MPIARGS" (MPIARGS: extra mpirun arguments, for NP > 1);
+# default "1 core|1|" "2 ranks|2|".  The variants run alike from the same
+# file (the transport does not change the arithmetic), so their sums
+# compare the whole stage, weighted by where its steps are.  Example, Open
+# MPI's single-copy transfers off against the default, 2 rounds:
+#   ROUNDS=2 bash bench/sample_shear_speed.sh runs/case 20000 "default|2|" \
+#     "nocma|2|--mca btl_vader_single_copy_mechanism none"
 # Environment:
 #   EVERY  use every EVERY-th restart file (default 1)
+#   ROUNDS repeat the whole sampling (default 1); even rounds run the
+#          variants in the reverse order, so that neither always goes first
 #   LMP    lmp binary (default build/lmp); INPUTS (default inputs/);
 #          OUT scratch directory (default build/bench/sample)
-# Prints a line per sample and the two sums.  RUNDIR must hold the run's
+# Prints a line per round and sample, and per round each variant's sum
+# and its ratio to the first's.  RUNDIR must hold the run's
 # prep.restart, its shear.restart.* and series.txt; a finished run's
 # log.shear.lammps gives the last step (else series.txt's last row).
 #   VARS   the run's own -var settings, as "name value ..." (e.g.
 #          VARS="preset quick"); they are not in the restart files
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
-rundir=$(cd "${1:?usage: sample_shear_speed.sh RUNDIR [NSTEPS]}" && pwd)
+rundir=$(cd "${1:?usage: sample_shear_speed.sh RUNDIR [NSTEPS [VARIANT ...]]}" && pwd)
 nsteps=${2:-20000}
+shift $(($# < 2 ? $# : 2))
+variants=("$@")
+[ ${#variants[@]} -gt 0 ] || variants=("1 core|1|" "2 ranks|2|")
 every=${EVERY:-1}
+rounds=${ROUNDS:-1}
 lmp=${LMP:-$top/build/lmp}
 inputs=${INPUTS:-$top/inputs}
 out=${OUT:-$top/build/bench/sample}
@@ -47,9 +61,10 @@ for i in "${!points[@]}"; do
   [ $((i % every)) -eq 0 ] && sel+=("${points[$i]}")
 done
 
-# steps per second of NSTEPS steps from step K on NP ranks
+# steps per second of NSTEPS steps from step K on NP ranks (MPIARGS: extra
+# mpirun arguments)
 sample() {
-  local k=$1 np=$2 dir=$out/np$2.$1 resume=yes
+  local k=$1 np=$2 mpiargs=$3 dir=$out/sample resume=yes
   rm -rf "$dir" && mkdir -p "$dir/snapshots"
   # the file and its checksum file (the deck resumes only from a file that verifies)
   local file=shear.restart.$k
@@ -63,7 +78,8 @@ sample() {
   read -r -a v <<< "${VARS:-}"
   for ((j = 0; j + 1 < ${#v[@]}; j += 2)); do extra+=(-var "${v[$j]}" "${v[$((j + 1))]}"); done
   local cmd=("$lmp")
-  if [ "$np" -gt 1 ]; then cmd=(mpirun --allow-run-as-root --oversubscribe -np "$np" "$lmp"); fi
+  # shellcheck disable=SC2206
+  if [ "$np" -gt 1 ]; then cmd=(mpirun --allow-run-as-root --oversubscribe -np "$np" $mpiargs "$lmp"); fi
   OMP_NUM_THREADS=1 "${cmd[@]}" -in "$inputs/cyclic_shear.lmp" -var inputs "$inputs" \
     -var stage shear -var resume "$resume" -var outdir "$dir" -var max_steps $((k + nsteps)) \
     "${extra[@]}" -log "$dir/log.driver.lammps" -screen none
@@ -74,20 +90,40 @@ sample() {
   awk -v n="$nsteps" -v t="$loop" 'BEGIN {printf "%.1f", n / t}'
 }
 
-echo "# $rundir: stage from step 0 to $last (finished: $finished), ${#sel[@]} samples of $nsteps steps"
-echo "# step  steps/s(1 core)  steps/s(2 ranks)  ratio"
-t1=0
-t2=0
-for i in "${!sel[@]}"; do
-  k=${sel[$i]}
-  next=$last
-  [ $((i + 1)) -lt ${#sel[@]} ] && next=${sel[$((i + 1))]}
-  r1=$(sample "$k" 1)
-  r2=$(sample "$k" 2)
-  printf "%9d  %8s  %8s  %.2f\n" "$k" "$r1" "$r2" "$(echo "$r2 / $r1" | bc -l)"
-  t1=$(echo "$t1 + ($next - $k) / $r1" | bc -l)
-  t2=$(echo "$t2 + ($next - $k) / $r2" | bc -l)
+names=()
+for v in "${variants[@]}"; do names+=("$(cut -d'|' -f1 <<< "$v")"); done
+echo "# $rundir: stage from step 0 to $last (finished: $finished), ${#sel[@]} samples of $nsteps steps, $rounds round(s)"
+echo "# round  step  steps/s: $(printf '%s; ' "${names[@]}")ratios to the first"
+for round in $(seq 1 "$rounds"); do
+  order=("${!variants[@]}")
+  if [ $((round % 2)) -eq 0 ]; then
+    order=()
+    for ((j = ${#variants[@]} - 1; j >= 0; j--)); do order+=("$j"); done
+  fi
+  sums=()
+  for j in "${!variants[@]}"; do sums[$j]=0; done
+  for i in "${!sel[@]}"; do
+    k=${sel[$i]}
+    next=$last
+    [ $((i + 1)) -lt ${#sel[@]} ] && next=${sel[$((i + 1))]}
+    rates=()
+    for j in "${order[@]}"; do
+      IFS='|' read -r _ np mpiargs <<< "${variants[$j]}"
+      rates[$j]=$(sample "$k" "$np" "${mpiargs:-}")
+    done
+    line=$(printf "%5d %9d " "$round" "$k")
+    for j in "${!variants[@]}"; do
+      line+=$(printf " %8s" "${rates[$j]}")
+      sums[$j]=$(echo "${sums[$j]} + ($next - $k) / ${rates[$j]}" | bc -l)
+    done
+    for j in "${!variants[@]}"; do
+      [ "$j" -gt 0 ] && line+=$(printf "  %.2f" "$(echo "${rates[$j]} / ${rates[0]}" | bc -l)")
+    done
+    echo "$line"
+  done
+  for j in "${!variants[@]}"; do
+    awk -v a="${sums[$j]}" -v b="${sums[0]}" -v n="$last" -v r="$round" -v name="${names[$j]}" 'BEGIN {
+      printf "round %d: stage of %d steps: %.0f s (%.2f h) %s, ratio to the first %.3f\n",
+             r, n, a, a / 3600, name, b / a }'
+  done
 done
-awk -v a="$t1" -v b="$t2" -v n="$last" 'BEGIN {
-  printf "stage of %d steps: %.0f s (%.2f h) on 1 core, %.0f s (%.2f h) on 2 ranks, ratio %.2f\n",
-         n, a, a / 3600, b, b / 3600, a / b }'
