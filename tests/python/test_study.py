@@ -17,10 +17,8 @@ the set-up's, beside the Python that runs the tests (scripts/python-env.sh).
 """
 import json
 import os
-import shutil
 import signal
 import subprocess
-import sys
 import time
 
 import numpy as np
@@ -28,14 +26,12 @@ import pytest
 
 from grflow_analysis import study
 from runfiles import read_series
+import workflowrun
+from workflowrun import ENV, SNAKEMAKE, needs_snakemake, planned
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 SMK = os.path.join(ROOT, "workflows", "physics_study.smk")
-BIN = os.path.dirname(sys.executable)       # grflow-study, grflow-figures
-ENV = dict(os.environ, PATH=BIN + os.pathsep + os.environ.get("PATH", ""), MPLBACKEND="Agg")
 LMP = os.environ.get("LMP", "lmp")
-SNAKEMAKE = shutil.which("snakemake")
-needs_snakemake = pytest.mark.skipif(SNAKEMAKE is None, reason="needs snakemake (Debian)")
 
 
 def test_flickers_are_exits_without_a_reversal():
@@ -62,22 +58,8 @@ def test_statistics_by_hand():
     assert study.stats([4.0]) == (4.0, None, 1)
 
 
-def planned(proc):
-    """{rule: job count} from the "Job stats" table of a dry run."""
-    jobs = {}
-    for line in (proc.stdout + proc.stderr).splitlines():
-        parts = line.split()
-        if len(parts) == 4 and all(p.isdigit() for p in parts[1:]):
-            jobs[parts[0]] = int(parts[1])
-    return jobs
-
-
 def snakemake(args, cwd, check=True):
-    proc = subprocess.run([SNAKEMAKE, "-s", SMK] + args, cwd=cwd, capture_output=True,
-                          text=True, timeout=900, env=ENV)
-    if check:
-        assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
-    return proc
+    return workflowrun.snakemake(SMK, args, cwd, check)
 
 
 def config(out, **more):

@@ -17,24 +17,20 @@ runs the tests (scripts/python-env.sh).
 """
 import json
 import os
-import shutil
 import subprocess
-import sys
 
 import numpy as np
 import pytest
 
 from grflow_analysis import curve
+import workflowrun
+from workflowrun import ENV, SNAKEMAKE, needs_snakemake, planned
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 SMK = os.path.join(ROOT, "workflows", "resistance_curve.smk")
 PROFILE = os.path.join(ROOT, "workflows", "profiles", "slurm")
-BIN = os.path.dirname(sys.executable)       # grflow-curve, grflow-figures
-ENV = dict(os.environ, PATH=BIN + os.pathsep + os.environ.get("PATH", ""), MPLBACKEND="Agg")
 
 LMP = os.environ.get("LMP", "lmp")
-SNAKEMAKE = shutil.which("snakemake")
-needs_snakemake = pytest.mark.skipif(SNAKEMAKE is None, reason="needs snakemake (Debian)")
 
 
 def test_fit_exact_power_law():
@@ -87,22 +83,8 @@ def test_curve_refuses_a_run_without_events(tmp_path):
     assert not (tmp_path / "out").exists()
 
 
-def planned(proc):
-    """{rule: job count} from the "Job stats" table of a dry run."""
-    jobs = {}
-    for line in (proc.stdout + proc.stderr).splitlines():
-        parts = line.split()
-        if len(parts) == 4 and all(p.isdigit() for p in parts[1:]):
-            jobs[parts[0]] = int(parts[1])
-    return jobs
-
-
 def snakemake(args, cwd, check=True):
-    proc = subprocess.run([SNAKEMAKE, "-s", SMK] + args, cwd=cwd, capture_output=True,
-                          text=True, timeout=900, env=ENV)
-    if check:
-        assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
-    return proc
+    return workflowrun.snakemake(SMK, args, cwd, check)
 
 
 @needs_snakemake
