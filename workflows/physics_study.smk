@@ -31,10 +31,9 @@
 # reads; OUT/study.{md,json} is the result.  workflows/README.md.
 
 import json
-import os
 
-GRFLOW = os.path.abspath(os.path.join(workflow.basedir, ".."))
-INPUTS = os.path.join(GRFLOW, "inputs")
+
+include: "common.smk"
 
 # the settings of issue 30 at N = 2000: the shear rate of the paper-size
 # case (v_x = 0.01 m/s over its wall gap: 0.38 1/s) as the baseline, two
@@ -52,22 +51,14 @@ SETTINGS = {
 }
 
 
-def var_pairs(text, what):
-    words = str(text).split()
-    if len(words) % 2:
-        raise ValueError(f"{what} {text!r}: need NAME VALUE pairs")
-    return " ".join(f"-var {words[k]} {words[k + 1]}" for k in range(0, len(words), 2))
-
-
 SEEDS = [int(s) for s in config.get("seeds", [1, 2, 3])]
 N = int(config.get("N", 2000))
 PRESET = config.get("preset", "paper")
 STUDY_SETTINGS = config.get("settings", SETTINGS)
 if isinstance(STUDY_SETTINGS, str):
     STUDY_SETTINGS = json.loads(STUDY_SETTINGS)
-# (an empty --config value reads as None)
-PREP_VARS = var_pairs(config.get("prep_vars", "calibrate yes") or "", "prep_vars")
-VARS = var_pairs(config.get("vars", "") or "", "vars")
+PREP_VARS = var_pairs(config.get("prep_vars", "calibrate yes"), "prep_vars")
+VARS = var_pairs(config.get("vars", ""), "vars")
 MAX_CYCLES = int(config.get("max_cycles", 60))
 OUT = config.get("out", f"runs/study-N{N}")
 LMP = config.get("lmp", "lmp")
@@ -88,11 +79,7 @@ for name, text in STUDY_SETTINGS.items():
     SHEAR_VARS[name] = var_pairs(text, f"settings {name}:")
 NAMES = list(STUDY_SETTINGS)
 
-MPI = f"mpirun --oversubscribe -np {NP} " if NP > 1 else ""
-if NP > 1 and os.geteuid() == 0:
-    MPI = f"mpirun --allow-run-as-root --oversubscribe -np {NP} "
-RUN = (f"{MPI}{LMP} -nocite -log none -screen none -in {INPUTS}/cyclic_shear.lmp "
-       f"-var inputs {INPUTS} -var preset {PRESET} -var N {N} {VARS}")
+RUN = lmp_command(LMP, NP, f"-var preset {PRESET} -var N {N} {VARS}")
 
 
 rule all:
@@ -139,12 +126,7 @@ rule shear:
     resources:
         mpi=NP,
     shell:
-        "mkdir -p {params.dir}/snapshots && "
-        "ln -sf $(realpath {input.restart}) {params.dir}/prep.restart && "
-        "ln -sf $(realpath {input.restart}).cksum {params.dir}/prep.restart.cksum && "
-        "cp {input.json} {params.dir}/prep.json && "
-        "(cp $(dirname {input.restart})/snapshots/atoms.prep.txt {params.dir}/snapshots/ "
-        "2>/dev/null || true) && "
+        LINK_PREP +
         "resume=no && if ls {params.dir}/shear.restart.*[0-9] > /dev/null 2>&1; then resume=yes; fi && "
         "{RUN} {params.vars} -var stage shear -var resume $resume -var outdir {params.dir} "
         "-var max_cycles {MAX_CYCLES} > {log} 2>&1 && "

@@ -24,10 +24,7 @@
 # result.  snakemake reruns only what is missing or failed; --summary lists
 # what is done; on a SLURM cluster add --profile workflows/profiles/slurm.
 
-import os
-
-GRFLOW = os.path.abspath(os.path.join(workflow.basedir, ".."))
-INPUTS = os.path.join(GRFLOW, "inputs")
+include: "common.smk"
 
 CSR = [float(c) for c in config.get("csr", [0.15, 0.2, 0.25, 0.3])]
 SEEDS = [int(s) for s in config.get("seeds", [1, 2, 3])]
@@ -39,7 +36,7 @@ OUT = config.get("out", "runs/curve-" + PRESET)
 LMP = config.get("lmp", "lmp")
 CURVE = config.get("curve", "grflow-curve")
 NP = int(config.get("np", 1))
-VARS = str(config.get("vars", "")).split()
+EXTRA = var_pairs(config.get("vars", ""), "vars")
 
 if PRESET not in ("quick", "paper"):
     raise ValueError(f"preset {PRESET}: use quick or paper")
@@ -49,14 +46,7 @@ if not SEEDS:
     raise ValueError("seeds: need one or more")
 if MAX_CYCLES < 1 or N_POST < 1 or NP < 1 or not (P_TARGET > 0):
     raise ValueError("max_cycles, n_post and np must be >= 1 and p_target > 0")
-if len(VARS) % 2:
-    raise ValueError(f"vars {VARS}: need NAME VALUE pairs")
-EXTRA = " ".join(f"-var {VARS[k]} {VARS[k + 1]}" for k in range(0, len(VARS), 2))
-MPI = f"mpirun --oversubscribe -np {NP} " if NP > 1 else ""
-if NP > 1 and os.geteuid() == 0:
-    MPI = f"mpirun --allow-run-as-root --oversubscribe -np {NP} "
-RUN = (f"{MPI}{LMP} -nocite -log none -screen none -in {INPUTS}/cyclic_shear.lmp "
-       f"-var inputs {INPUTS} -var preset {PRESET} -var p_target {P_TARGET} {EXTRA}")
+RUN = lmp_command(LMP, NP, f"-var preset {PRESET} -var p_target {P_TARGET} {EXTRA}")
 
 
 def csr_tag(c):
@@ -103,10 +93,7 @@ rule shear:
     resources:
         mpi=NP,
     shell:
-        "mkdir -p {params.dir}/snapshots && "
-        "ln -sf $(realpath {input.restart}) {params.dir}/prep.restart && "
-        "cp {input.json} {params.dir}/prep.json && "
-        "cp $(dirname {input.restart})/snapshots/atoms.prep.txt {params.dir}/snapshots/ 2>/dev/null; "
+        LINK_PREP +
         "{RUN} -var stage shear -var outdir {params.dir} -var tau_amp {params.tau} "
         "-var max_cycles {MAX_CYCLES} -var n_post {N_POST} > {log} 2>&1 && "
         "grep -q 'GRFLOW shear: done' {params.dir}/log.shear.lammps && "

@@ -81,7 +81,6 @@ def run_values(run_dir):
     entries = {e["name"]: e["measured"] for e in summ["entries"]}
     for e in summ["definitions"]["entries"]:
         entries[e["name"]] = e["measured"]
-    entries["z_g_post_IL_p5"] = entries.get("z_g_post_IL_p%g" % PERCENTILE)
     ru_liq, _ = ga.protocol(prep)
     entries["n_exits"], entries["n_flickers"] = flickers(series, events, ru_liq)
     if not isinstance(entries["N_IL"], float):
