@@ -18,6 +18,9 @@
 #               table; the first is the baseline          SETTINGS below
 #   prep_vars   -var pairs of the preparation       "calibrate yes"
 #   vars        -var pairs of every run (preparation and shear)           ""
+#   rate_settings  settings that differ in shear_rate only, whose quasi-static
+#               limit (a straight line in the rate, taken to 0) the table adds
+#               [base, rate0.19, rate0.095] with the default settings, else []
 #   max_cycles  a run that has not liquefied after this many cycles is a
 #               run-out                                                     60
 #   out         study directory                           runs/study-N<N>
@@ -78,6 +81,13 @@ for name, text in STUDY_SETTINGS.items():
                          "not 'prep')")
     SHEAR_VARS[name] = var_pairs(text, f"settings {name}:")
 NAMES = list(STUDY_SETTINGS)
+RATE_SETTINGS = config.get("rate_settings",
+                           ["base", "rate0.19", "rate0.095"] if STUDY_SETTINGS is SETTINGS else [])
+if isinstance(RATE_SETTINGS, str):
+    RATE_SETTINGS = RATE_SETTINGS.split()
+for name in RATE_SETTINGS:
+    if name not in NAMES:
+        raise ValueError(f"rate_settings: {name} is not one of the settings ({', '.join(NAMES)})")
 
 RUN = lmp_command(LMP, NP, f"-var preset {PRESET} -var N {N} {VARS}")
 
@@ -143,5 +153,6 @@ rule study:
     params:
         settings=" ".join(NAMES),
         seeds=" ".join(str(s) for s in SEEDS),
+        rates=" ".join(["--rate-settings"] + RATE_SETTINGS) if RATE_SETTINGS else "",
     shell:
-        "{STUDY} {OUT} --settings {params.settings} --seeds {params.seeds}"
+        "{STUDY} {OUT} --settings {params.settings} --seeds {params.seeds} {params.rates}"

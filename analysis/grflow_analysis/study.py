@@ -20,6 +20,15 @@ the scatter of the shear stage alone.  A quantity a run did not reach
 and the table gives how many runs it has.  Writes OUT/study.json (every
 run and every statistic) and OUT/study.md.  Exit status 2 if a run
 directory or one of its files is missing.
+
+    grflow-study OUT --settings ... --seeds ... --rate-settings NAME NAME [...]
+
+adds the quasi-static limit: the named settings differ in -var shear_rate
+only (an error otherwise); for each seed and quantity a straight line in
+the shear rate through the settings' values (least squares; through both
+points when there are two rates) is taken to rate 0, and the table gives
+each seed's value at rate 0, their mean +- sample sd over the seeds, and
+the mean slope.
 """
 import argparse
 import json
@@ -128,6 +137,60 @@ def study(out, settings, seeds):
             "quantities": [{"key": k, "heading": h, "how": w} for k, h, w in QUANTITIES]}
 
 
+def shear_rates(d, names):
+    """{setting: its shear rate} for settings whose shear-stage -var pairs
+    differ in shear_rate only; ValueError names the first that does not."""
+    rates, rest = {}, {}
+    for s in names:
+        if s not in d["settings"]:
+            raise ValueError("--rate-settings: %s is not one of --settings" % s)
+        words = (d["shear_vars"][s] or "").split()
+        pairs = dict(zip(words[0::2], words[1::2]))
+        try:
+            rates[s] = float(pairs.pop("shear_rate"))
+        except (KeyError, ValueError):
+            raise ValueError("--rate-settings: %s has no numeric shear_rate in its -var pairs "
+                             "(%r)" % (s, d["shear_vars"][s])) from None
+        rest[s] = pairs
+    first = names[0]
+    for s in names[1:]:
+        if rest[s] != rest[first]:
+            raise ValueError("--rate-settings: %s and %s differ in more than shear_rate "
+                             "(%r, %r)" % (s, first, d["shear_vars"][s], d["shear_vars"][first]))
+    if len(set(rates.values())) < 2:
+        raise ValueError("--rate-settings: need two or more different shear rates, got %s"
+                         % sorted(set(rates.values())))
+    return rates
+
+
+def line_to_zero(rates, values):
+    """(value at rate 0, slope) of the least-squares line through the points
+    (rate, value) that have a value, or (None, None) with fewer than two
+    different rates."""
+    pts = [(r, v) for r, v in zip(rates, values) if v is not None]
+    if len(set(r for r, _ in pts)) < 2:
+        return None, None
+    slope, at0 = np.polyfit([r for r, _ in pts], [v for _, v in pts], 1)
+    return float(at0), float(slope)
+
+
+def quasistatic(d, names):
+    """The quasi-static limit of every quantity over the settings NAMES
+    (shear_rates): per seed the value at rate 0 and the slope; over the
+    seeds the mean +- sd of the value at rate 0 and the mean slope."""
+    rates = shear_rates(d, names)
+    out = {"settings": names, "rates": [rates[s] for s in names], "table": {}}
+    for key, _, _ in QUANTITIES:
+        per = {}
+        for seed in d["seeds"]:
+            vals = [d["runs"][s][str(seed)][key] for s in names]
+            per[str(seed)] = dict(zip(("at0", "slope"), line_to_zero(out["rates"], vals)))
+        mean, sd, n = stats([per[str(seed)]["at0"] for seed in d["seeds"]])
+        slope, _, _ = stats([per[str(seed)]["slope"] for seed in d["seeds"]])
+        out["table"][key] = {"seeds": per, "mean": mean, "sd": sd, "n": n, "slope_mean": slope}
+    return out
+
+
 def _num(x, digits=3):
     if x is None:
         return "-"
@@ -172,6 +235,22 @@ def markdown(d):
                                                         t["diff_n"])
             lines.append("| %s | %s | %s | %s |" % (s, " | ".join(per),
                                                      _cell(t["mean"], t["sd"], t["n"]), diff))
+    q = d.get("quasistatic")
+    if q:
+        lines += ["", "## Quasi-static limit", "",
+                  "Settings %s at shear rates %s 1/s: per seed, the least-squares straight "
+                  "line in the shear rate through the settings' values, taken to rate 0 "
+                  "(through both points when there are two rates); then the mean +- sample "
+                  "sd of the seeds' values at rate 0, and the mean slope (per 1/s)."
+                  % (", ".join(q["settings"]), ", ".join(_num(r) for r in q["rates"])), "",
+                  "| quantity | " + " | ".join("seed %d at 0" % s for s in d["seeds"]) +
+                  " | mean +- sd (n) | mean slope |",
+                  "| --- |" + " --- |" * (len(d["seeds"]) + 2)]
+        for key, heading, _ in QUANTITIES:
+            t = q["table"][key]
+            lines.append("| %s | %s | %s | %s |" % (
+                heading, " | ".join(_num(t["seeds"][str(seed)]["at0"]) for seed in d["seeds"]),
+                _cell(t["mean"], t["sd"], t["n"]), _num(t["slope_mean"])))
     return "\n".join(lines) + "\n"
 
 
@@ -181,10 +260,15 @@ def main(argv=None):
     ap.add_argument("--settings", nargs="+", required=True,
                     help="setting names, the baseline first")
     ap.add_argument("--seeds", nargs="+", type=int, required=True)
+    ap.add_argument("--rate-settings", nargs="+", metavar="NAME",
+                    help="settings that differ in shear_rate only: add their quasi-static "
+                    "limit (straight line in the rate, taken to 0)")
     args = ap.parse_args(argv)
     try:
         d = study(args.out, args.settings, args.seeds)
-    except FileNotFoundError as e:
+        if args.rate_settings:
+            d["quasistatic"] = quasistatic(d, args.rate_settings)
+    except (FileNotFoundError, ValueError) as e:
         print("grflow-study: %s" % e, file=sys.stderr)
         return 2
     with open(os.path.join(args.out, "study.json"), "w") as f:

@@ -10,7 +10,10 @@ study of shear-stage settings over seeds, from one preparation per seed.
 - killed during a shear run, the workflow run again resumes that run from
   its restart file (the decks' -var resume yes) and ends with one series,
   every step once;
-- a bad config is refused before anything runs.
+- a bad config is refused before anything runs;
+- the quasi-static limit (--rate-settings): values on a straight line in
+  the shear rate give its value at rate 0 and its slope; settings that
+  differ in more than the rate are refused.
 
 Environment: LMP (lmp binary).  grflow-study, which the workflow runs, is
 the set-up's, beside the Python that runs the tests (scripts/python-env.sh).
@@ -56,6 +59,49 @@ def test_statistics_by_hand():
     assert study.stats([1.0, None, 3.0]) == (2.0, pytest.approx(2 ** 0.5), 2)
     assert study.stats([None]) == (None, None, 0)
     assert study.stats([4.0]) == (4.0, None, 1)
+
+
+def _rate_study(values, shear_vars):
+    """A study dict as study() makes it, with QUANTITIES' values given per
+    setting and seed ({setting: {seed: value}}; every quantity the same)."""
+    runs = {s: {str(seed): {k: v for k, _, _ in study.QUANTITIES} for seed, v in per.items()}
+            for s, per in values.items()}
+    return {"settings": list(values), "seeds": [1, 2], "runs": runs, "shear_vars": shear_vars}
+
+
+def test_quasistatic_limit_of_a_line():
+    # seed 1 on 3.0 + 0.5 rate, seed 2 on 3.2 - 0.1 rate: exact at rate 0
+    rates = {"base": 0.4, "half": 0.2, "quarter": 0.1}
+    values = {s: {1: 3.0 + 0.5 * r, 2: 3.2 - 0.1 * r} for s, r in rates.items()}
+    d = _rate_study(values, {s: "shear_rate %g cundall_l 0.1" % r for s, r in rates.items()})
+    q = study.quasistatic(d, list(rates))
+    t = q["table"]["z_g_exit_mean"]
+    assert t["seeds"]["1"]["at0"] == pytest.approx(3.0)
+    assert t["seeds"]["2"]["at0"] == pytest.approx(3.2)
+    assert t["seeds"]["1"]["slope"] == pytest.approx(0.5)
+    assert (t["mean"], t["n"]) == (pytest.approx(3.1), 2)
+    assert t["sd"] == pytest.approx(0.2 / 2 ** 0.5)
+    assert t["slope_mean"] == pytest.approx(0.2)
+    # a seed with a value at one rate only has no line: left out, counted
+    d["runs"]["half"]["2"]["z_g_exit_mean"] = None
+    d["runs"]["quarter"]["2"]["z_g_exit_mean"] = None
+    t = study.quasistatic(d, list(rates))["table"]["z_g_exit_mean"]
+    assert t["seeds"]["2"]["at0"] is None and t["n"] == 1 and t["mean"] == pytest.approx(3.0)
+    # least squares through 3 points off a line: value at 0 by hand
+    assert study.line_to_zero([1.0, 2.0, 3.0], [1.0, 2.0, 4.0])[0] == pytest.approx(-2.0 / 3.0)
+
+
+@pytest.mark.parametrize("shear_vars,names,expect", [
+    ({"a": "shear_rate 0.4", "b": "shear_rate 0.2 cundall_l 0.1"}, ["a", "b"],
+     "differ in more than shear_rate"),
+    ({"a": "shear_rate 0.4", "b": "cundall_l 0.1"}, ["a", "b"], "no numeric shear_rate"),
+    ({"a": "shear_rate 0.4", "b": "shear_rate 0.4"}, ["a", "b"], "two or more different"),
+    ({"a": "shear_rate 0.4", "b": "shear_rate 0.2"}, ["a", "c"], "c is not one of --settings"),
+])
+def test_quasistatic_refuses_settings_that_are_not_a_rate_series(shear_vars, names, expect):
+    d = _rate_study({s: {1: 1.0, 2: 2.0} for s in shear_vars}, shear_vars)
+    with pytest.raises(ValueError, match=expect):
+        study.quasistatic(d, names)
 
 
 def snakemake(args, cwd, check=True):
@@ -147,6 +193,7 @@ def test_killed_study_resumes_the_shear_run(tmp_path):
     ("settings={\"x\": \"cundall_l\"}", "NAME VALUE"),
     ("preset=fast", "preset fast"),
     ("prep_vars=calibrate", "NAME VALUE"),
+    ("rate_settings=base nope", "rate_settings: nope is not one of the settings"),
 ])
 def test_bad_config_is_refused(tmp_path, bad, expect):
     proc = snakemake(["-n", "--cores", "1", "--config", bad, f"out={tmp_path}"], tmp_path,
