@@ -16,7 +16,8 @@ baseline), the mean and standard deviation of the seed-by-seed
 difference (setting minus baseline, over the seeds that have both): the
 preparation is the same, so the difference is the setting's effect plus
 the scatter of the shear stage alone.  A quantity a run did not reach
-(no liquefaction, no exit) is left out of that setting's statistics,
+(no liquefaction, no exit) is left out of that setting's statistics
+(a run-out's N_IL cell says "> N (run-out)", N its max_cycles),
 and the table gives how many runs it has.  Writes OUT/study.json (every
 run and every statistic) and OUT/study.md.  Exit status 2 if a run
 directory or one of its files is missing.
@@ -104,6 +105,10 @@ def run_values(run_dir):
     out["z_g_prep"] = float(prep["z_g"]) if ga._is_number(prep.get("z_g")) else None
     out["N_end"] = float(summ["N_end"]) if ga._is_number(summ.get("N_end")) else None
     out["shear_vars"] = meta.get("shear_vars")
+    # a run-out (no liquefaction): N_IL is only known to exceed the cycles
+    # it ran, max_cycles of the workflow (run.json), else the series' last N
+    out["N_IL_above"] = None if out["N_IL"] is not None else \
+        float(meta.get("max_cycles", out["N_end"]))
     return out
 
 
@@ -231,6 +236,10 @@ def markdown(d):
         for s in d["settings"]:
             t = d["table"][s][k]
             per = [_num(d["runs"][s][str(seed)][k]) for seed in d["seeds"]]
+            if k == "N_IL":
+                per = ["> %s (run-out)" % _num(r["N_IL_above"]) if r.get("N_IL_above")
+                       is not None else v for r, v in
+                       zip((d["runs"][s][str(seed)] for seed in d["seeds"]), per)]
             diff = "-" if s == d["baseline"] else _cell(t["diff_mean"], t["diff_sd"],
                                                         t["diff_n"])
             lines.append("| %s | %s | %s | %s |" % (s, " | ".join(per),

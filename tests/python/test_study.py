@@ -136,6 +136,8 @@ def test_tiny_study_end_to_end(tmp_path):
             done = [x for x in log.splitlines() if x.startswith("GRFLOW shear: done at step")]
             assert len(done) == 1
             assert (n is None) == done[0].endswith("initial liquefaction not reached (run-out)")
+            # its N_IL cell says it exceeds max_cycles
+            assert (d["runs"][s][str(seed)]["N_IL_above"] == 20.0) == (n is None)
         liquefied = [n for n in n_il if n is not None]
         assert liquefied, "no run liquefied: raise tau_amp"
         assert d["table"][s]["N_IL"]["n"] == len(liquefied)
@@ -147,6 +149,9 @@ def test_tiny_study_end_to_end(tmp_path):
     assert "tau_amp = 40e3 Pa" in log
     md = (out / "study.md").read_text()
     assert "## N_IL" in md and "| lower |" in md
+    n_runouts = sum(d["runs"][s][str(seed)]["N_IL"] is None for s in ("base", "lower")
+                    for seed in (1, 2))
+    assert md.count("> 20 (run-out)") == n_runouts
     # a run directory is one grflow-figures reads
     proc = subprocess.run(["grflow-figures", str(out / "seed2" / "lower")],
                           capture_output=True, text=True, env=ENV, timeout=600)
