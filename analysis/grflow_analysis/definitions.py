@@ -565,6 +565,30 @@ def definitions(series, events, ru_liq, sample_ms=(), knee=False, block_ms=(),
                             ga._fmt(x["ends_fn_nonpositive_fraction"])))
             entries.append(_row("z_g_all_overlaps_minus_fn_positive_%s" % kind, desc,
                                 "-", meas))
+        # the paper's z_g takes N_p as "the total number of particles": the
+        # same snapshots with the sub-volume the whole height (every free
+        # particle; the glued ones stay out, as in compute net)
+        whole = (overlaps_over_snapshots(run_dir, series, events["step_IL"], slab=1.0)
+                 if run_dir else {})
+        out["whole_height_post_IL"] = whole
+        for kind, label in (("crossings", "the first zero-crossings of tau after a reversal"),
+                            ("reversals", "the reversals")):
+            x = allsnap.get(kind) if isinstance(allsnap, dict) else None
+            w = whole.get(kind) if isinstance(whole, dict) else None
+            if isinstance(whole, str):
+                meas, desc_more = whole, ""
+            elif not x or not x["snapshots"] or not w or not w["snapshots"]:
+                meas, desc_more = ga.NOT_AVAILABLE, ""
+            else:
+                meas = w["z_g_fn_positive_mean"] - x["z_g_fn_positive_mean"]
+                desc_more = "; %d snapshots, means %s (whole height) and %s (slab %g)" % (
+                    w["snapshots"], ga._fmt(w["z_g_fn_positive_mean"]),
+                    ga._fmt(x["z_g_fn_positive_mean"]), DECK_SLAB)
+            entries.append(_row(
+                "z_g_whole_height_minus_slab_%s" % kind,
+                "mean over the snapshots at %s from initial liquefaction on of z_g (f_n > 0) "
+                "over every free particle of the whole height minus z_g of the decks' "
+                "central slab, both from the same snapshot%s" % (label, desc_more), "-", meas))
         for stn in OVERLAP_STATES:
             d = ov.get(stn, ga.NOT_AVAILABLE)
             meas = d["z_g_all_overlaps"] if isinstance(d, dict) else d

@@ -278,7 +278,8 @@ def test_command_with_the_options(run_dir, tmp_path):
               "inertial_block3ms_undefined_blocks", "n_exits@2ms", "z_g_exit_mean@5ms",
               "z_g_post_IL_min@2ms", "z_g_post_IL_p5@5ms", "inertial_max@2ms",
               "z_g_all_overlaps_C0", "z_g_all_overlaps_C2",
-              "z_g_all_overlaps_minus_fn_positive_crossings"):
+              "z_g_all_overlaps_minus_fn_positive_crossings",
+              "z_g_whole_height_minus_slab_crossings", "z_g_whole_height_minus_slab_reversals"):
         assert n in names, n
     assert d["options"] == {"sample_ms": [2.0, 5.0], "knee": True, "block_ms": [3.0],
                             "percentile": 5.0, "overlaps": True}
@@ -331,6 +332,10 @@ def test_overlaps_over_snapshots_split_by_event_kind(tmp_path):
         assert x["difference_mean"] == pytest.approx(0.25, abs=1e-15)
         assert x["ends_fn_nonpositive_fraction"] == pytest.approx(2 / 5, abs=1e-15)
     assert gd.overlaps_over_snapshots(str(tmp_path), series, None) == ga.NOT_REACHED
+    # the whole height (slab 1.0): f_n > 0 z_g 6/5 (test above) on both kinds
+    whole = gd.overlaps_over_snapshots(str(tmp_path), series, 100, slab=1.0)
+    for kind in ("crossings", "reversals"):
+        assert whole[kind]["z_g_fn_positive_mean"] == pytest.approx(6 / 5, abs=1e-15)
 
 
 def test_options_on_a_run_that_never_liquefied(tmp_path):
@@ -342,7 +347,8 @@ def test_options_on_a_run_that_never_liquefied(tmp_path):
     e = {x["name"]: x for x in summ["definitions"]["entries"]}
     for n in ("z_g_knee_mean", "z_g_post_IL_p5", "inertial_block3ms_median_post_IL",
               "n_exits@2ms", "z_g_post_IL_min@2ms", "z_g_all_overlaps_C0",
-              "z_g_all_overlaps_minus_fn_positive_crossings"):
+              "z_g_all_overlaps_minus_fn_positive_crossings",
+              "z_g_whole_height_minus_slab_crossings", "z_g_whole_height_minus_slab_reversals"):
         assert e[n]["measured"] == ga.NOT_REACHED, n
         assert e[n]["match"] is False
     assert isinstance(e["inertial_block3ms_max"]["measured"], float)
