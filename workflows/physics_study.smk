@@ -40,8 +40,9 @@ include: "common.smk"
 
 # the settings of issue 30 at N = 2000: the shear rate of the paper-size
 # case (v_x = 0.01 m/s over its wall gap: 0.38 1/s) as the baseline, two
-# slower rates for the quasi-static limit, the unclipped normal force, and
-# Cundall's local damping at four coefficients
+# slower rates for the quasi-static limit, the unclipped normal force,
+# Cundall's local damping at four coefficients, and the unclipped force
+# with Cundall's damping at 0.2
 SETTINGS = {
     "base": "shear_rate 0.38",
     "rate0.19": "shear_rate 0.19",
@@ -51,6 +52,8 @@ SETTINGS = {
     "cundall0.1": "shear_rate 0.38 cundall_l 0.1",
     "cundall0.2": "shear_rate 0.38 cundall_l 0.2",
     "cundall0.4": "shear_rate 0.38 cundall_l 0.4",
+    # the combination of the two model changes, at the paper's rate
+    "unclipped_cundall0.2": "shear_rate 0.38 normal_force unclipped cundall_l 0.2",
 }
 
 

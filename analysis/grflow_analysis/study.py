@@ -20,7 +20,9 @@ the scatter of the shear stage alone.  A quantity a run did not reach
 (a run-out's N_IL cell says "> N (run-out)", N its max_cycles),
 and the table gives how many runs it has.  Writes OUT/study.json (every
 run and every statistic) and OUT/study.md.  Exit status 2 if a run
-directory or one of its files is missing.
+directory or one of its files is missing; with --partial a run that is
+not done (no run.json: a study in progress) is "not run" instead and left
+out (a setting with no finished run is still an error).
 
     grflow-study OUT --settings ... --seeds ... --rate-settings NAME NAME [...]
 
@@ -120,9 +122,27 @@ def stats(values):
     return (float(np.mean(v)), float(np.std(v, ddof=1)) if len(v) > 1 else None, len(v))
 
 
-def study(out, settings, seeds):
-    runs = {s: {seed: run_values(os.path.join(out, "seed%d" % seed, s)) for seed in seeds}
-            for s in settings}
+def not_run():
+    """The values of a run that is not done (no run.json): every quantity
+    None, marked so that the table says "not run"."""
+    out = {k: None for k, _, _ in QUANTITIES}
+    out.update({"e": None, "z_g_prep": None, "N_end": None, "shear_vars": None,
+                "N_IL_above": None, "not_run": True})
+    return out
+
+
+def study(out, settings, seeds, partial=False):
+    """``partial``: a run without run.json (not done yet) is "not run" and
+    left out of the statistics, instead of an error."""
+    def values(seed, s):
+        d = os.path.join(out, "seed%d" % seed, s)
+        if partial and not os.path.exists(os.path.join(d, "run.json")):
+            return not_run()
+        return run_values(d)
+    runs = {s: {seed: values(seed, s) for seed in seeds} for s in settings}
+    for s in settings:
+        if all(runs[s][seed].get("not_run") for seed in seeds):
+            raise FileNotFoundError("%s: no seed has a finished run (run.json)" % s)
     base = settings[0]
     table = {}
     for s in settings:
@@ -136,7 +156,8 @@ def study(out, settings, seeds):
                         "diff_n": dn}
         table[s] = row
     return {"out": out, "settings": settings, "baseline": base, "seeds": seeds,
-            "shear_vars": {s: runs[s][seeds[0]]["shear_vars"] for s in settings},
+            "shear_vars": {s: next(runs[s][seed]["shear_vars"] for seed in seeds
+                                   if not runs[s][seed].get("not_run")) for s in settings},
             "runs": {s: {str(k): v for k, v in r.items()} for s, r in runs.items()},
             "table": table,
             "quantities": [{"key": k, "heading": h, "how": w} for k, h, w in QUANTITIES]}
@@ -235,7 +256,8 @@ def markdown(d):
                   "| --- |" + " --- |" * (len(d["seeds"]) + 2)]
         for s in d["settings"]:
             t = d["table"][s][k]
-            per = [_num(d["runs"][s][str(seed)][k]) for seed in d["seeds"]]
+            per = ["not run" if d["runs"][s][str(seed)].get("not_run") else
+                   _num(d["runs"][s][str(seed)][k]) for seed in d["seeds"]]
             if k == "N_IL":
                 per = ["> %s (run-out)" % _num(r["N_IL_above"]) if r.get("N_IL_above")
                        is not None else v for r, v in
@@ -269,12 +291,15 @@ def main(argv=None):
     ap.add_argument("--settings", nargs="+", required=True,
                     help="setting names, the baseline first")
     ap.add_argument("--seeds", nargs="+", type=int, required=True)
+    ap.add_argument("--partial", action="store_true",
+                    help="a run without run.json (not done yet) is 'not run' and left out, "
+                    "instead of an error")
     ap.add_argument("--rate-settings", nargs="+", metavar="NAME",
                     help="settings that differ in shear_rate only: add their quasi-static "
                     "limit (straight line in the rate, taken to 0)")
     args = ap.parse_args(argv)
     try:
-        d = study(args.out, args.settings, args.seeds)
+        d = study(args.out, args.settings, args.seeds, partial=args.partial)
         if args.rate_settings:
             d["quasistatic"] = quasistatic(d, args.rate_settings)
     except (FileNotFoundError, ValueError) as e:

@@ -6,7 +6,7 @@ study of shear-stage settings over seeds, from one preparation per seed.
 - the paired statistics against the baseline (values made by hand);
 - a tiny study (300 spheres, 2 seeds, 2 settings) runs end to end: each
   setting is sheared from the seed's one preparation, and the table has
-  every run;
+  every run; a run not done is an error, or "not run" with --partial;
 - killed during a shear run, the workflow run again resumes that run from
   its restart file (the decks' -var resume yes) and ends with one series,
   every step once;
@@ -156,6 +156,18 @@ def test_tiny_study_end_to_end(tmp_path):
     proc = subprocess.run(["grflow-figures", str(out / "seed2" / "lower")],
                           capture_output=True, text=True, env=ENV, timeout=600)
     assert proc.returncode == 0, proc.stdout[-2000:] + proc.stderr[-2000:]
+    # a study in progress: a run without run.json is an error, or with
+    # --partial "not run" and left out
+    (out / "seed2" / "lower" / "run.json").unlink()
+    with pytest.raises(FileNotFoundError):
+        study.study(str(out), ["base", "lower"], [1, 2])
+    p = study.study(str(out), ["base", "lower"], [1, 2], partial=True)
+    assert p["runs"]["lower"]["2"]["not_run"] and p["runs"]["lower"]["2"]["N_IL"] is None
+    assert p["table"]["lower"]["z_g_prep"]["n"] == 1
+    assert "| lower | " in study.markdown(p) and "not run" in study.markdown(p)
+    (out / "seed1" / "lower" / "run.json").unlink()
+    with pytest.raises(FileNotFoundError, match="lower: no seed has a finished run"):
+        study.study(str(out), ["base", "lower"], [1, 2], partial=True)
 
 
 @needs_snakemake
