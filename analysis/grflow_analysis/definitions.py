@@ -364,6 +364,8 @@ def overlaps_over_snapshots(run_dir, series, step_il, slab=DECK_SLAB):
     Returns a dict kind name ("crossings", "reversals") -> dict with
     ``snapshots``, ``z_g_fn_positive_mean``, ``z_g_all_overlaps_mean``,
     ``difference_mean`` and ``difference_max`` (all overlaps minus f_n > 0),
+    ``z_g_whole_height_mean`` (f_n > 0 over every free particle of the
+    whole height, slab 1.0: the paper's "total number of particles"),
     ``ends_fn_nonpositive_fraction`` (of all the contact ends counted
     under "all", those of pairs with f_n <= 0); NOT_REACHED without
     initial liquefaction, and an empty dict without events.txt."""
@@ -389,8 +391,9 @@ def overlaps_over_snapshots(run_dir, series, step_il, slab=DECK_SLAB):
         zlo, zhi = float(series["zlo"][r]), float(series["zhi"][r])
         allo = zg_overlaps(atoms, cont, zlo, zhi, slab, "all")
         pos = zg_overlaps(atoms, cont, zlo, zhi, slab, "fn>0")
+        whole = zg_overlaps(atoms, cont, zlo, zhi, 1.0, "fn>0")
         acc[kind].append((pos["z_g"], allo["z_g"], allo["ends_fn_nonpositive"],
-                          2.0 * allo["N_c"]))
+                          2.0 * allo["N_c"], whole["z_g"]))
     out = {}
     for kind, v in acc.items():
         if not v:
@@ -402,6 +405,7 @@ def overlaps_over_snapshots(run_dir, series, step_il, slab=DECK_SLAB):
         out[kind] = {"snapshots": int(len(a)), "z_g_fn_positive_mean": float(a[:, 0].mean()),
                      "z_g_all_overlaps_mean": float(a[:, 1].mean()),
                      "difference_mean": float(diff.mean()), "difference_max": float(diff.max()),
+                     "z_g_whole_height_mean": float(a[:, 4].mean()),
                      "ends_fn_nonpositive_fraction": float(a[:, 2].sum() / ends) if ends
                      else ga.NOT_AVAILABLE}
     return out
@@ -568,21 +572,17 @@ def definitions(series, events, ru_liq, sample_ms=(), knee=False, block_ms=(),
         # the paper's z_g takes N_p as "the total number of particles": the
         # same snapshots with the sub-volume the whole height (every free
         # particle; the glued ones stay out, as in compute net)
-        whole = (overlaps_over_snapshots(run_dir, series, events["step_IL"], slab=1.0)
-                 if run_dir else {})
-        out["whole_height_post_IL"] = whole
         for kind, label in (("crossings", "the first zero-crossings of tau after a reversal"),
                             ("reversals", "the reversals")):
             x = allsnap.get(kind) if isinstance(allsnap, dict) else None
-            w = whole.get(kind) if isinstance(whole, dict) else None
-            if isinstance(whole, str):
-                meas, desc_more = whole, ""
-            elif not x or not x["snapshots"] or not w or not w["snapshots"]:
+            if isinstance(allsnap, str):
+                meas, desc_more = allsnap, ""
+            elif not x or not x["snapshots"]:
                 meas, desc_more = ga.NOT_AVAILABLE, ""
             else:
-                meas = w["z_g_fn_positive_mean"] - x["z_g_fn_positive_mean"]
+                meas = x["z_g_whole_height_mean"] - x["z_g_fn_positive_mean"]
                 desc_more = "; %d snapshots, means %s (whole height) and %s (slab %g)" % (
-                    w["snapshots"], ga._fmt(w["z_g_fn_positive_mean"]),
+                    x["snapshots"], ga._fmt(x["z_g_whole_height_mean"]),
                     ga._fmt(x["z_g_fn_positive_mean"]), DECK_SLAB)
             entries.append(_row(
                 "z_g_whole_height_minus_slab_%s" % kind,

@@ -331,6 +331,8 @@ def test_overlaps_over_snapshots_split_by_event_kind(tmp_path):
         assert x["z_g_fn_positive_mean"] == 1.0 and x["z_g_all_overlaps_mean"] == 1.25
         assert x["difference_mean"] == pytest.approx(0.25, abs=1e-15)
         assert x["ends_fn_nonpositive_fraction"] == pytest.approx(2 / 5, abs=1e-15)
+        # the whole height of the same snapshot: f_n > 0 z_g 6/5 (test above)
+        assert x["z_g_whole_height_mean"] == pytest.approx(6 / 5, abs=1e-15)
     assert gd.overlaps_over_snapshots(str(tmp_path), series, None) == ga.NOT_REACHED
     # the whole height (slab 1.0): f_n > 0 z_g 6/5 (test above) on both kinds
     whole = gd.overlaps_over_snapshots(str(tmp_path), series, 100, slab=1.0)
