@@ -193,9 +193,23 @@ def read_prep(path):
     return prep
 
 
-def protocol(prep):
-    """(ru_liq, tau_amp) from prep.json, defaulting to 0.99 and 25e3 Pa."""
-    prep = prep or {}
+def read_shear_record(run_dir):
+    """The shear stage's settings, ``shear.json`` of run_dir, as a dict
+    (written by the decks when the stage starts: inputs/shear_record.sh);
+    None when the run has none (a run from before the decks wrote it);
+    FormatError if it is not a JSON object."""
+    path = os.path.join(run_dir, "shear.json")
+    if not os.path.exists(path):
+        return None
+    return read_prep(path)
+
+
+def protocol(prep, shear=None):
+    """(ru_liq, tau_amp) of the shear stage: from its record shear.json
+    (``shear``) when given, else from prep.json, defaulting to 0.99 and
+    25e3 Pa."""
+    prep = dict(prep or {})
+    prep.update({k: v for k, v in (shear or {}).items() if k in ("ru_liq", "tau_amp")})
     ru_liq = prep.get("ru_liq")
     tau_amp = prep.get("tau_amp")
     ru_liq = float(ru_liq) if _is_number(ru_liq) and ru_liq > 0 else DEFAULT_RU_LIQ
@@ -832,10 +846,13 @@ def _num(x):
 
 
 def summary(series, prep, events, cycle_index=None, sample_ms=(), knee=False,
-            block_ms=(), percentile=None, overlaps=False, run_dir=None):
+            block_ms=(), percentile=None, overlaps=False, run_dir=None, shear=None):
     """Measured values beside the paper's, plus cycle C, as a JSON-ready dict.
 
-    ``prep`` is the prep.json dict (None if unavailable); ``events`` the
+    ``prep`` is the prep.json dict (None if unavailable); ``shear`` the
+    shear stage's record, shear.json (:func:`read_shear_record`; None for a
+    run without one): its tau_amp and ru_liq are the stage's, and the dict
+    keeps it as ``shear_stage``; ``events`` the
     fix's, of :func:`run_events` (the only source of the events and of
     N_IL); ``cycle_index`` selects cycle C among the post-liquefaction
     cycles (default: the first with all six states).  Entries measured as
@@ -850,7 +867,7 @@ def summary(series, prep, events, cycle_index=None, sample_ms=(), knee=False,
     snapshots of ``run_dir``).  With any of them the dict has the key
     ``definitions``; without, it is as before them.
     """
-    ru_liq, tau_amp = protocol(prep)
+    ru_liq, tau_amp = protocol(prep, shear)
     N = cycle_count(series, events)
     liq = liquefaction(series, events, ru_liq)
     zg = series["z_g"]
@@ -866,7 +883,9 @@ def summary(series, prep, events, cycle_index=None, sample_ms=(), knee=False,
         _entry("e_prep", "void ratio at the end of preparation", "-", prep_value("e")),
         _entry("p_prep", "mean stress at the end of preparation", "Pa", prep_value("p")),
         _entry("z_g_prep", "z_g at the end of preparation", "-", prep_value("z_g")),
-        _entry("tau_amp", "shear stress amplitude used", "Pa", prep_value("tau_amp")),
+        _entry("tau_amp", "shear stress amplitude used", "Pa",
+               float(shear["tau_amp"]) if _is_number((shear or {}).get("tau_amp"))
+               else prep_value("tau_amp")),
     ]
     onset = liq["onset"]
     if onset is None:
@@ -998,7 +1017,7 @@ def summary(series, prep, events, cycle_index=None, sample_ms=(), knee=False,
                 "P_c": [_num(v) for v in connectivity(series, r)],
                 "P_c_non_floaters": [_num(v) for v in connectivity_non_floaters(series, r)]}
     out = {
-        "ru_liq": ru_liq, "tau_amp": tau_amp,
+        "ru_liq": ru_liq, "tau_amp": tau_amp, "shear_stage": shear,
         "rows": int(len(N)), "last_step": int(series["step"][-1]),
         "N_end": float(N[-1]), "reversals": int(np.max(series["reversals"])),
         "onset_row": onset,
@@ -1074,6 +1093,13 @@ def summary_markdown(s):
     lines.append("")
     lines.append("ru_liq = %g, tau_amp = %g kPa, %d rows, last step %d, N_end = %.4g."
                  % (s["ru_liq"], s["tau_amp"] / 1e3, s["rows"], s["last_step"], s["N_end"]))
+    lines.append("")
+    if s.get("shear_stage"):
+        lines.append("The shear stage's settings (shear.json): %s."
+                     % ", ".join("%s %s" % kv for kv in s["shear_stage"].items()))
+    else:
+        lines.append("The shear stage's settings: not recorded (no shear.json: a run "
+                     "from before the decks wrote it; its log.shear.lammps has them).")
     text = "\n".join(lines) + "\n"
     if "definitions" in s:
         from grflow_analysis import definitions as _defs

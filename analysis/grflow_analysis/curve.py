@@ -37,7 +37,8 @@ def run_result(run_dir):
         meta = json.load(f)
     series = ga.read_series(os.path.join(run_dir, "series.txt"))
     prep = ga.read_prep(os.path.join(run_dir, "prep.json"))
-    summ = ga.summary(series, prep, ga.run_events(run_dir, series))
+    summ = ga.summary(series, prep, ga.run_events(run_dir, series),
+                      shear=ga.read_shear_record(run_dir))
     entries = {e["name"]: e["measured"] for e in summ["entries"]}
     n_il = entries["N_IL"]
     liquefied = isinstance(n_il, float)

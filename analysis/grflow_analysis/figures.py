@@ -46,11 +46,11 @@ MAX_POINTS = 200000     # whole-run curves are thinned to about this many points
 class Run:
     """Everything the figures need, computed once from the series."""
 
-    def __init__(self, run_dir, series, prep, events, cycle_index=None):
+    def __init__(self, run_dir, series, prep, events, cycle_index=None, shear=None):
         self.dir = run_dir
         self.s = series
         self.prep = prep
-        self.ru_liq, self.tau_amp = ga.protocol(prep)
+        self.ru_liq, self.tau_amp = ga.protocol(prep, shear)
         self.events = events
         self.N = ga.cycle_count(series, self.events)
         self.liq = ga.liquefaction(series, self.events, self.ru_liq)
@@ -457,13 +457,18 @@ def main(argv=None):
         _note("prep.json unusable (%s); ru_liq = %g and tau_amp = %g Pa assumed, "
               "preparation values not available" % (err, ga.DEFAULT_RU_LIQ,
                                                      ga.DEFAULT_TAU_AMP))
+    try:
+        shear = ga.read_shear_record(run_dir)
+    except (OSError, ga.FormatError) as err:
+        print("error: shear.json unusable: %s" % err, file=sys.stderr)
+        return 2
     out = args.out or os.path.join(run_dir, "figures")
     os.makedirs(out, exist_ok=True)
 
-    run = Run(run_dir, series, prep, events, args.cycle)
+    run = Run(run_dir, series, prep, events, args.cycle, shear)
     summ = ga.summary(series, prep, run.events, args.cycle, sample_ms=args.sample_ms,
                       knee=args.knee, block_ms=args.block_ms, percentile=args.zg_percentile,
-                      overlaps=args.overlaps, run_dir=run_dir)
+                      overlaps=args.overlaps, run_dir=run_dir, shear=shear)
     summ["run_dir"] = os.path.abspath(run_dir)
     with open(os.path.join(out, "summary.json"), "w") as f:
         json.dump(_json_safe(summ), f, indent=1, allow_nan=False)

@@ -89,11 +89,12 @@ def run_values(run_dir):
     series = ga.read_series(os.path.join(run_dir, "series.txt"))
     prep = ga.read_prep(os.path.join(run_dir, "prep.json"))
     events = ga.run_events(run_dir, series)
-    summ = ga.summary(series, prep, events, knee=True, percentile=PERCENTILE)
+    shear = ga.read_shear_record(run_dir)
+    summ = ga.summary(series, prep, events, knee=True, percentile=PERCENTILE, shear=shear)
     entries = {e["name"]: e["measured"] for e in summ["entries"]}
     for e in summ["definitions"]["entries"]:
         entries[e["name"]] = e["measured"]
-    ru_liq, _ = ga.protocol(prep)
+    ru_liq, _ = ga.protocol(prep, shear)
     entries["n_exits"], entries["n_flickers"] = flickers(series, events, ru_liq)
     if not isinstance(entries["N_IL"], float):
         entries["n_exits"] = entries["n_flickers"] = None

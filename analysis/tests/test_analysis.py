@@ -617,6 +617,28 @@ def test_summary_never_liquefied(dry_run):
     assert summ["tau_amp"] == 25e3 and summ["ru_liq"] == 0.99
 
 
+def test_summary_takes_the_shear_stage_record(dry_run, tmp_path):
+    # a shear stage run with another tau_amp and ru_liq than the
+    # preparation's prep.json says (-var tau_amp at the shear stage, as the
+    # resistance curve does): its record shear.json decides
+    root, _, _, _ = dry_run
+    s = ga.read_series(os.path.join(root, "series.txt"))
+    prep = ga.read_prep(os.path.join(root, "prep.json"))
+    assert ga.read_shear_record(root) is None
+    (tmp_path / "shear.json").write_text('{"normal_force": "unclipped", "tau_amp": 3.0e4, '
+                                         '"ru_liq": 0.95}')
+    shear = ga.read_shear_record(str(tmp_path))
+    summ = ga.summary(s, prep, ga.run_events(root, s), shear=shear)
+    assert summ["tau_amp"] == 3.0e4 and summ["ru_liq"] == 0.95
+    assert entries(summ)["tau_amp"]["measured"] == 3.0e4
+    assert summ["shear_stage"]["normal_force"] == "unclipped"
+    assert "(shear.json): normal_force unclipped" in ga.summary_markdown(summ)
+    assert "not recorded" in ga.summary_markdown(ga.summary(s, prep, ga.run_events(root, s)))
+    (tmp_path / "shear.json").write_text("[1, 2]")
+    with pytest.raises(ga.FormatError):
+        ga.read_shear_record(str(tmp_path))
+
+
 # ------------------------------------------------------------ command
 
 def test_command_liquefied(liquefied_run, tmp_path, capsys):

@@ -364,6 +364,31 @@ def test_resume_before_the_first_restart_file(protocol, tmp_path, cache):
     assert "starting it again from prep.restart" in (killed / "log.shear.lammps").read_text()
 
 
+def test_resume_keeps_the_stage_settings(protocol, tmp_path, cache):
+    """As in LAMMPS (inputs/shear_record.sh, shared): shear.json records
+    the stage's settings; a resume with another contact law or wall speed
+    stops with an error naming them and leaves the run as it was; one with
+    the same values goes on."""
+    src, _ = protocol
+    common = dict(SMALL, stage="shear", restart_every=1000, max_steps=2000, n_post=1000)
+    out = shear_dir(tmp_path / "run", src)
+    run(out, cache, v_x=0.01, **common)
+    record = json.loads((out / "shear.json").read_text())
+    assert record["normal_force"] == "clipped" and record["v_x"] == 0.01
+    series = (out / "series.txt").read_text()
+    proc = subprocess.run(liggghts_cmd(out, cache, resume="yes", v_x=0.02,
+                                       normal_force="unclipped", **common),
+                          capture_output=True, text=True, errors="replace", timeout=300)
+    text = proc.stdout + proc.stderr + (out / "log.shear.lammps").read_text()
+    assert proc.returncode != 0
+    assert "normal_force unclipped (the stage has clipped)" in text
+    assert "v_x 0.02 (the stage has 0.01)" in text
+    assert (out / "series.txt").read_text() == series
+    run(out, cache, resume="yes", v_x="1e-2", **common)
+    assert "nothing to resume" in (out / "log.shear.lammps").read_text()
+    assert (out / "series.txt").read_text() == series
+
+
 def test_agitation_stage(tmp_path, cache):
     """Stage 2b (agitate.liggghts: dilation, agitation with velocities drawn
     in LIGGGHTS, recompression with mu_rec) runs and keeps the density; it

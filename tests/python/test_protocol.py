@@ -392,6 +392,34 @@ def test_normal_force_reaches_pair_and_walls(protocol, tmp_path):
     assert rows["clipped"][-1] != rows["unclipped"][-1]
 
 
+def test_resume_keeps_the_stage_settings(protocol, tmp_path):
+    """The shear stage records its settings in shear.json when it starts;
+    a resume that gives another contact law, wall speed or damping stops
+    with an error naming each, and leaves the run as it was; a resume with
+    the same values (here written otherwise: 1e-2 for 0.01) goes on."""
+    src, _ = protocol
+    common = dict(SMALL, stage="shear", restart_every=1000, max_steps=2000, n_post=1000)
+    out = shear_dir(tmp_path / "run", src)
+    run(out, v_x=0.01, **common)
+    record = json.loads((out / "shear.json").read_text())
+    assert record["normal_force"] == "clipped" and record["v_x"] == 0.01
+    assert record["pair"] == "grflow" and record["cundall_l"] == 0.0
+    series = (out / "series.txt").read_text()
+
+    proc = subprocess.run(lmp_cmd(out, resume="yes", v_x=0.02, normal_force="unclipped",
+                                  **common), capture_output=True, text=True, timeout=300)
+    text = proc.stdout + proc.stderr + (out / "log.shear.lammps").read_text()
+    assert proc.returncode != 0
+    assert "normal_force unclipped (the stage has clipped)" in text
+    assert "v_x 0.02 (the stage has 0.01)" in text
+    assert (out / "series.txt").read_text() == series
+    assert json.loads((out / "shear.json").read_text()) == record
+
+    run(out, resume="yes", v_x="1e-2", **common)
+    assert "nothing to resume" in (out / "log.shear.lammps").read_text()
+    assert (out / "series.txt").read_text() == series
+
+
 def test_shear_rate_sets_the_wall_speed(protocol, tmp_path):
     """-var shear_rate G: the top wall moves at v_x = G h, h the wall gap
     (zhi - zlo, constant in the shear stage), whatever v_x says.  Checked
