@@ -45,7 +45,7 @@ case "$cmd" in
     lmpargs=(-in "$dir/inputs/cyclic_shear.lmp" -var inputs "$dir/inputs" -var outdir "$dir"
              -log "$dir/log.driver.lammps" "$@")
     if [[ " $* " == *" resume yes "* ]]; then
-      last=$(ls -t "$dir"/shear.restart.* 2> /dev/null | head -n 1 || true)
+      last=$(ls -t "$dir"/shear.restart.*[0-9] 2> /dev/null | head -n 1 || true)
       [ -n "$last" ] && echo "restartfile $(stat -c %Y "$last") $(date -Is -r "$last") $(basename "$last")" >> "$dir/segments.txt"
     fi
     log start "np $np cpus $cpus${MPIARGS:+ mpirun args: $MPIARGS} args: $*"
