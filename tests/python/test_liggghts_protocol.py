@@ -372,7 +372,7 @@ def test_resume_keeps_the_stage_settings(protocol, tmp_path, cache):
     src, _ = protocol
     common = dict(SMALL, stage="shear", restart_every=1000, max_steps=2000, n_post=1000)
     out = shear_dir(tmp_path / "run", src)
-    run(out, cache, v_x=0.01, **common)
+    run(out, cache, v_x=0.01, normal_force="clipped", **common)
     record = json.loads((out / "shear.json").read_text())
     assert record["normal_force"] == "clipped" and record["v_x"] == 0.01
     series = (out / "series.txt").read_text()
@@ -384,7 +384,7 @@ def test_resume_keeps_the_stage_settings(protocol, tmp_path, cache):
     assert "normal_force unclipped (the stage has clipped)" in text
     assert "v_x 0.02 (the stage has 0.01)" in text
     assert (out / "series.txt").read_text() == series
-    run(out, cache, resume="yes", v_x="1e-2", **common)
+    run(out, cache, resume="yes", v_x="1e-2", normal_force="clipped", **common)
     assert "nothing to resume" in (out / "log.shear.lammps").read_text()
     assert (out / "series.txt").read_text() == series
 

@@ -400,7 +400,7 @@ def test_resume_keeps_the_stage_settings(protocol, tmp_path):
     src, _ = protocol
     common = dict(SMALL, stage="shear", restart_every=1000, max_steps=2000, n_post=1000)
     out = shear_dir(tmp_path / "run", src)
-    run(out, v_x=0.01, **common)
+    run(out, v_x=0.01, normal_force="clipped", **common)
     record = json.loads((out / "shear.json").read_text())
     assert record["normal_force"] == "clipped" and record["v_x"] == 0.01
     assert record["pair"] == "grflow" and record["cundall_l"] == 0.0
@@ -415,7 +415,7 @@ def test_resume_keeps_the_stage_settings(protocol, tmp_path):
     assert (out / "series.txt").read_text() == series
     assert json.loads((out / "shear.json").read_text()) == record
 
-    run(out, resume="yes", v_x="1e-2", **common)
+    run(out, resume="yes", v_x="1e-2", normal_force="clipped", **common)
     assert "nothing to resume" in (out / "log.shear.lammps").read_text()
     assert (out / "series.txt").read_text() == series
 
