@@ -16,7 +16,8 @@
 #   preset      quick or paper (inputs/params.lmp)                       paper
 #   settings    {NAME: "-var pairs of the shear stage"}, in the order of the
 #               table; the first is the baseline          SETTINGS below
-#   prep_vars   -var pairs of the preparation       "calibrate yes"
+#   prep_vars   -var pairs of the preparation
+#               "calibrate yes normal_force clipped"
 #   vars        -var pairs of every run (preparation and shear)           ""
 #   rate_settings  settings that differ in shear_rate only, whose quasi-static
 #               limit (a straight line in the rate, taken to 0) the table adds
@@ -42,16 +43,19 @@ include: "common.smk"
 # case (v_x = 0.01 m/s over its wall gap: 0.38 1/s) as the baseline, two
 # slower rates for the quasi-static limit, the unclipped normal force,
 # Cundall's local damping at four coefficients, and the unclipped force
-# with Cundall's damping at 0.2
+# with Cundall's damping at 0.2.  The study was designed and run with the
+# clipped normal force as the baseline (the decks' default until this
+# study made the unclipped law the default), so every setting and the
+# preparation name their law.
 SETTINGS = {
-    "base": "shear_rate 0.38",
-    "rate0.19": "shear_rate 0.19",
-    "rate0.095": "shear_rate 0.095",
+    "base": "shear_rate 0.38 normal_force clipped",
+    "rate0.19": "shear_rate 0.19 normal_force clipped",
+    "rate0.095": "shear_rate 0.095 normal_force clipped",
     "unclipped": "shear_rate 0.38 normal_force unclipped",
-    "cundall0.05": "shear_rate 0.38 cundall_l 0.05",
-    "cundall0.1": "shear_rate 0.38 cundall_l 0.1",
-    "cundall0.2": "shear_rate 0.38 cundall_l 0.2",
-    "cundall0.4": "shear_rate 0.38 cundall_l 0.4",
+    "cundall0.05": "shear_rate 0.38 normal_force clipped cundall_l 0.05",
+    "cundall0.1": "shear_rate 0.38 normal_force clipped cundall_l 0.1",
+    "cundall0.2": "shear_rate 0.38 normal_force clipped cundall_l 0.2",
+    "cundall0.4": "shear_rate 0.38 normal_force clipped cundall_l 0.4",
     # the combination of the two model changes, at the paper's rate
     "unclipped_cundall0.2": "shear_rate 0.38 normal_force unclipped cundall_l 0.2",
 }
@@ -63,7 +67,8 @@ PRESET = config.get("preset", "paper")
 STUDY_SETTINGS = config.get("settings", SETTINGS)
 if isinstance(STUDY_SETTINGS, str):
     STUDY_SETTINGS = json.loads(STUDY_SETTINGS)
-PREP_VARS = var_pairs(config.get("prep_vars", "calibrate yes"), "prep_vars")
+PREP_VARS = var_pairs(config.get("prep_vars", "calibrate yes normal_force clipped"),
+                      "prep_vars")
 VARS = var_pairs(config.get("vars", ""), "vars")
 MAX_CYCLES = int(config.get("max_cycles", 60))
 OUT = config.get("out", f"runs/study-N{N}")
