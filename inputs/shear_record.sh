@@ -70,7 +70,7 @@ fi
 
 if [ ! -f "$record" ]; then
   write_record "$@"
-  emit "$out" "print \"GRFLOW shear: $record was missing (a stage started before GRFLOW wrote it): written with this resume's settings, which are not checked\""
+  emit "$out" "print \"GRFLOW shear: $record was missing (the stage started before GRFLOW wrote it, or its restart file was copied without it): written with the settings of this resume, which are not checked\""
   exit 0
 fi
 
@@ -88,6 +88,6 @@ done
 if [ -z "$differ" ]; then
   emit "$out" "# the resume's settings are those of $record"
 else
-  emit "$out" "print \"ERROR: GRFLOW resume: the shear stage in $dir was started with other settings than this resume gives:$differ; resume with the stage's values ($record), or start the stage again without -var resume yes\"
+  emit "$out" "print \"ERROR: GRFLOW resume: the shear stage in $dir was started with other settings than this resume gives:$differ; resume with the values of the stage ($record), or start the stage again without -var resume yes\"
 \${grflow_quit}"
 fi
