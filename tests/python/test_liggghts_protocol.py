@@ -44,7 +44,7 @@ INPUTS = os.path.abspath(os.environ.get(
     "GRFLOW_INPUTS", os.path.join(os.path.dirname(__file__), "..", "..", "inputs")))
 DECK = os.path.join(INPUTS, "liggghts", "cyclic_shear.liggghts")
 # the quick preset with 300 spheres and a larger amplitude: initial
-# liquefaction within a few cycles (N_IL = 6.0 in the build of 2026-11-26)
+# liquefaction within a few cycles
 SMALL = {"preset": "quick", "N": "300", "tau_amp": "40e3", "n_post": "1",
          "series_every": "50", "max_steps": "1000000"}
 

@@ -35,6 +35,10 @@ INPUTS = os.environ.get("GRFLOW_INPUTS",
 DECK = os.path.join(INPUTS, "cyclic_shear.lmp")
 STOCK_DECK = os.path.join(INPUTS, "cyclic_shear_stock.lmp")
 SMALL = {"preset": "quick", "N": "500", "n_post": "1", "series_every": "50"}
+# the protocol fixture's run: a series row at every check of fix
+# grflow/shear (check_every 10), so that every snapshot (taken at an
+# event, on a check) has its row
+PROTOCOL = dict(SMALL, series_every="10")
 
 
 def lmp_cmd(outdir, screen=False, deck=DECK, **var):
@@ -60,7 +64,7 @@ def run(outdir, timeout=900, deck=DECK, **var):
 def protocol(tmp_path_factory):
     out = tmp_path_factory.mktemp("protocol") / "run"
     t0 = time.time()
-    run(out, **SMALL)
+    run(out, **PROTOCOL)
     return out, time.time() - t0
 
 
@@ -83,7 +87,7 @@ def test_whole_protocol_reaches_liquefaction(protocol):
     col = {name: [r[k] for r in rows] for k, name in enumerate(COLUMNS)}
     steps = col["step"]
     assert steps == sorted(set(steps))
-    assert all(b - a == 50 for a, b in zip(steps, steps[1:]))
+    assert all(b - a == int(PROTOCOL["series_every"]) for a, b in zip(steps, steps[1:]))
     ru_max = max(col["r_u"])
     reversals = col["reversals"][-1]
     log = (out / "log.shear.lammps").read_text()
@@ -211,6 +215,9 @@ def check_snapshots_against_series(out):
 
 def test_snapshots_hold_the_series_network(protocol):
     compared, _ = check_snapshots_against_series(protocol[0])
+    # every snapshot step (the fixture writes a row at every check), and
+    # enough of them for the comparison to mean something
+    assert compared == len(ga.list_snapshots(str(protocol[0]), "contacts"))
     assert compared >= 3
 
 
@@ -418,6 +425,17 @@ def test_resume_keeps_the_stage_settings(protocol, tmp_path):
     run(out, resume="yes", v_x="1e-2", normal_force="clipped", **common)
     assert "nothing to resume" in (out / "log.shear.lammps").read_text()
     assert (out / "series.txt").read_text() == series
+
+    # a restart file copied into a directory without shear.json (as
+    # bench/shear_ab.sh does): the resume writes it, says so, and goes on
+    copy = tmp_path / "copy"
+    (copy / "snapshots").mkdir(parents=True)
+    (copy / "prep.json").write_bytes((src / "prep.json").read_bytes())
+    for name in ("shear.restart.1000", "shear.restart.1000.cksum"):
+        (copy / name).write_bytes((out / name).read_bytes())
+    run(copy, resume="yes", normal_force="unclipped", **dict(common, max_steps=1500))
+    assert "shear.json was missing" in (copy / "log.shear.lammps").read_text()
+    assert json.loads((copy / "shear.json").read_text())["normal_force"] == "unclipped"
 
 
 def test_shear_rate_sets_the_wall_speed(protocol, tmp_path):

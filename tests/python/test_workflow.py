@@ -90,21 +90,21 @@ def snakemake(args, cwd, check=True):
 @needs_snakemake
 def test_tiny_campaign_end_to_end(tmp_path):
     out = tmp_path / "curve"
-    config = ["--config", "csr=[0.45,0.05]", "seeds=[1]", f"out={out}", f"lmp={LMP}",
+    config = ["--config", "csr=[0.6,0.05]", "seeds=[1]", f"out={out}", f"lmp={LMP}",
               "vars=N 300", "max_cycles=5"]
     # a campaign stopped after its first run (here: asked for that run
     # only), then run again: only the missing run and the curve are
     # planned, the preparation and the finished run are kept
-    snakemake(["--cores", "2", str(out / "seed1" / "csr0.45" / "run.json")] + config, tmp_path)
+    snakemake(["--cores", "2", str(out / "seed1" / "csr0.6" / "run.json")] + config, tmp_path)
     proc = snakemake(["-n", "--cores", "2"] + config, tmp_path)
     assert planned(proc) == {"all": 1, "curve": 1, "shear": 1, "total": 3}, proc.stdout
     snakemake(["--cores", "2"] + config, tmp_path)
 
     c = json.loads((out / "curve.json").read_text())
     runs = {r["csr"]: r for r in c["runs"]}
-    assert set(runs) == {0.45, 0.05}
-    assert runs[0.45]["liquefied"] and runs[0.45]["N_IL"] > 0
-    assert runs[0.45]["tau_amp"] == pytest.approx(45.0e3)
+    assert set(runs) == {0.6, 0.05}
+    assert runs[0.6]["liquefied"] and runs[0.6]["N_IL"] > 0
+    assert runs[0.6]["tau_amp"] == pytest.approx(60.0e3)
     # the run-out: stopped by max_cycles, not liquefied
     assert not runs[0.05]["liquefied"] and runs[0.05]["N_IL"] is None
     log = (out / "seed1" / "csr0.05" / "log.shear.lammps").read_text()
@@ -117,11 +117,11 @@ def test_tiny_campaign_end_to_end(tmp_path):
     assert (out / "curve.png").stat().st_size > 0
     assert "run-out" in (out / "curve.md").read_text()
     # one preparation for both CSR values
-    assert (out / "seed1" / "csr0.45" / "prep.restart").resolve() == \
+    assert (out / "seed1" / "csr0.6" / "prep.restart").resolve() == \
         (out / "seed1" / "prep" / "prep.restart").resolve()
 
     # a run directory is one grflow-figures reads
-    proc = subprocess.run(["grflow-figures", str(out / "seed1" / "csr0.45")],
+    proc = subprocess.run(["grflow-figures", str(out / "seed1" / "csr0.6")],
                           capture_output=True, text=True, env=ENV, timeout=600)
     assert proc.returncode == 0, proc.stdout[-2000:] + proc.stderr[-2000:]
 
