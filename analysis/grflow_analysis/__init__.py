@@ -204,14 +204,21 @@ def read_shear_record(run_dir):
     return read_prep(path)
 
 
+def stage_values(prep, shear=None):
+    """prep.json's values (``prep``, None if unavailable) with the shear
+    stage's own ru_liq and tau_amp from its record shear.json (``shear``)
+    where it has them: the values the shear stage ran with."""
+    out = dict(prep or {})
+    out.update({k: v for k, v in (shear or {}).items() if k in ("ru_liq", "tau_amp")})
+    return out
+
+
 def protocol(prep, shear=None):
-    """(ru_liq, tau_amp) of the shear stage: from its record shear.json
-    (``shear``) when given, else from prep.json, defaulting to 0.99 and
-    25e3 Pa."""
-    prep = dict(prep or {})
-    prep.update({k: v for k, v in (shear or {}).items() if k in ("ru_liq", "tau_amp")})
-    ru_liq = prep.get("ru_liq")
-    tau_amp = prep.get("tau_amp")
+    """(ru_liq, tau_amp) of the shear stage (:func:`stage_values`),
+    defaulting to 0.99 and 25e3 Pa."""
+    values = stage_values(prep, shear)
+    ru_liq = values.get("ru_liq")
+    tau_amp = values.get("tau_amp")
     ru_liq = float(ru_liq) if _is_number(ru_liq) and ru_liq > 0 else DEFAULT_RU_LIQ
     tau_amp = float(tau_amp) if _is_number(tau_amp) and tau_amp > 0 else DEFAULT_TAU_AMP
     return ru_liq, tau_amp
@@ -871,7 +878,7 @@ def summary(series, prep, events, cycle_index=None, sample_ms=(), knee=False,
     N = cycle_count(series, events)
     liq = liquefaction(series, events, ru_liq)
     zg = series["z_g"]
-    prep = prep or {}
+    prep = stage_values(prep, shear)
 
     def prep_value(key):
         v = prep.get(key)
@@ -883,9 +890,7 @@ def summary(series, prep, events, cycle_index=None, sample_ms=(), knee=False,
         _entry("e_prep", "void ratio at the end of preparation", "-", prep_value("e")),
         _entry("p_prep", "mean stress at the end of preparation", "Pa", prep_value("p")),
         _entry("z_g_prep", "z_g at the end of preparation", "-", prep_value("z_g")),
-        _entry("tau_amp", "shear stress amplitude used", "Pa",
-               float(shear["tau_amp"]) if _is_number((shear or {}).get("tau_amp"))
-               else prep_value("tau_amp")),
+        _entry("tau_amp", "shear stress amplitude used", "Pa", prep_value("tau_amp")),
     ]
     onset = liq["onset"]
     if onset is None:
