@@ -2,8 +2,9 @@
 # Build LIGGGHTS 3.8.0 with GRFLOW inside: fetch Debian's source package
 # (scripts/fetch-liggghts-source.sh, cached in GRFLOW_CACHE_DIR, default
 # ~/.cache/grflow), stage its src/ in BUILD_DIR with our patches
-# (liggghts/patches/*.patch) and GRFLOW's LIGGGHTS files (src/shared/*,
-# src/LIGGGHTS/*) added, then build the liggghts executable and
+# (liggghts/patches/*.patch) and GRFLOW's files added (src/shared/*,
+# src/LIGGGHTS/*, and the commands' classes of src/GRFLOW that
+# src/LIGGGHTS/lammps-sources.txt lists), then build the liggghts executable and
 # libliggghts.so with CMake (Ninja and ccache when there).  The cached tree
 # is never written to.  See liggghts/README.md.
 #
@@ -61,9 +62,19 @@ for p in "$top"/liggghts/patches/*.patch; do
   patch -d "$next" -p1 --batch --fuzz=0 --no-backup-if-mismatch --quiet < "$p" \
     || { echo "ERROR: $p does not apply to LIGGGHTS 3.8.0" >&2; exit 1; }
 done
-for f in "$top"/src/shared/* "$top"/src/LIGGGHTS/*; do
+# src/shared, src/LIGGGHTS (less its list) and the files of src/GRFLOW that
+# src/LIGGGHTS/lammps-sources.txt lists
+common=()
+while read -r name; do
+  case "$name" in ''|'#'*) continue ;; esac
+  [ -f "$top/src/GRFLOW/$name" ] || { echo "ERROR: src/LIGGGHTS/lammps-sources.txt lists $name," \
+    "which src/GRFLOW does not have" >&2; exit 1; }
+  common+=("$top/src/GRFLOW/$name")
+done < "$top/src/LIGGGHTS/lammps-sources.txt"
+for f in "$top"/src/shared/* "$top"/src/LIGGGHTS/* "${common[@]}"; do
   [ -f "$f" ] || continue
   name=$(basename "$f")
+  [ "$name" = lammps-sources.txt ] && continue
   if [ -e "$next/src/$name" ]; then
     echo "ERROR: $f: LIGGGHTS's src/ (or another GRFLOW file) already has $name" >&2
     exit 1

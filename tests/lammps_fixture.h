@@ -18,11 +18,11 @@
 #ifndef GRFLOW_TEST_LAMMPS_FIXTURE_H
 #define GRFLOW_TEST_LAMMPS_FIXTURE_H
 
-#include "compute_grflow_network.h"
-#include "fix_grflow_compress.h"
-#include "fix_grflow_shear.h"
-#include "fix_grflow_wall.h"
-#include "grflow_restart.h"
+#include "grflow_host.h"
+#include "grflow_network.h"
+#include "grflow_servo.h"
+#include "grflow_shear_rule.h"
+#include "grflow_wall.h"
 #include "library.h"
 
 #include <gtest/gtest.h>
@@ -39,13 +39,13 @@
 
 namespace grflow_test {
 
-// the output layouts (0-based positions of the vectors), from the style
-// headers: the one source of each (tests/test_layouts.py checks the decks
-// and docs against them)
-using NetVector = LAMMPS_NS::ComputeGRFLOWNetwork;      // GRFLOW::NetworkLayout
-using ShearVector = LAMMPS_NS::FixGRFLOWShear;          // GRFLOW::ShearLayout
-using CompressVector = LAMMPS_NS::FixGRFLOWCompress;    // GRFLOW::CompressLayout
-using WallVector = LAMMPS_NS::FixGRFLOWWall;            // LO_FX ... HI_DY, NVECTOR
+// the output layouts (0-based positions of the vectors), from the
+// host-free headers: the one source of each (tests/test_layouts.py checks
+// the decks and docs against them)
+using NetVector = LAMMPS_NS::GRFLOW::NetworkLayout;        // compute grflow/network
+using ShearVector = LAMMPS_NS::GRFLOW::ShearLayout;        // fix grflow/shear
+using CompressVector = LAMMPS_NS::GRFLOW::CompressLayout;  // fix grflow/compress
+using WallVector = LAMMPS_NS::GRFLOW::FlatWalls;           // fix grflow/wall: LO_FX ... HI_DY, NVECTOR
 
 // one LAMMPS instance, quiet, closed on destruction
 class Lammps {
@@ -223,7 +223,7 @@ inline std::string workfile(const std::string &name)
 // values), npos if there is none or more than one.
 inline size_t grflow_block(const std::string &bytes, double count, double version = 0.0)
 {
-  const double tag = LAMMPS_NS::GRFLOW::RESTART_TAG;
+  const double tag = LAMMPS_NS::GRFLOW::RESTART_BLOCK_TAG;
   const std::string tagbytes((const char *) &tag, sizeof(double));
   size_t at = std::string::npos;
   for (size_t pos = bytes.find(tagbytes); pos != std::string::npos;

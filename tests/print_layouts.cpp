@@ -13,19 +13,20 @@
 
 /* ----------------------------------------------------------------------
    The output layouts of GRFLOW's compute and fixes as the compiler sees
-   them in the style headers (the one source of each), one line per
+   them in the host-free headers (the one source of each), one line per
    entry: "layout name position" (0-based).  tests/python/test_layouts.py
    checks every other place that writes a layout out (inputs/names.lmp,
    inputs/walls.lmp, the series of inputs/shear.lmp, analysis/,
    tests/python/test_protocol.py, inputs/README.md) against these lines.
    An entry missing here is a compile error if it left the header; one
-   moved in the header moves here.
+   moved in the header moves here.  The commands' classes use these
+   layouts (compute_grflow_network.cpp, ...).
 ------------------------------------------------------------------------- */
 
-#include "compute_grflow_network.h"
-#include "fix_grflow_compress.h"
-#include "fix_grflow_shear.h"
-#include "fix_grflow_wall.h"
+#include "grflow_network.h"
+#include "grflow_servo.h"
+#include "grflow_shear_rule.h"
+#include "grflow_wall.h"
 
 #include <cstdio>
 
@@ -35,7 +36,7 @@ using namespace LAMMPS_NS;
 
 int main()
 {
-  using Net = ComputeGRFLOWNetwork;
+  using Net = GRFLOW::NetworkLayout;
   ENTRY("network", Net, SXX);
   ENTRY("network", Net, SYY);
   ENTRY("network", Net, SZZ);
@@ -66,7 +67,7 @@ int main()
   std::printf("network CMAX %d\n", GRFLOW::NetworkOptions().cmax);
   std::printf("network SIZE %d\n", Net::size(GRFLOW::NetworkOptions().cmax));
 
-  using Shear = FixGRFLOWShear;
+  using Shear = GRFLOW::ShearLayout;
   ENTRY("shear", Shear, DIRECTION);
   ENTRY("shear", Shear, REVERSALS);
   ENTRY("shear", Shear, XWALL);
@@ -83,7 +84,7 @@ int main()
   ENTRY("shear", Shear, EVENT);
   ENTRY("shear", Shear, NOUT);
 
-  using Comp = FixGRFLOWCompress;
+  using Comp = GRFLOW::CompressLayout;
   ENTRY("compress", Comp, CONVERGED);
   ENTRY("compress", Comp, SXX);
   ENTRY("compress", Comp, SYY);
@@ -105,7 +106,7 @@ int main()
   ENTRY("compress", Comp, FACTOR_Z);
   ENTRY("compress", Comp, NOUT);
 
-  using Wall = FixGRFLOWWall;
+  using Wall = GRFLOW::FlatWalls;
   ENTRY("wall", Wall, LO_FX);
   ENTRY("wall", Wall, LO_FY);
   ENTRY("wall", Wall, LO_FZ);

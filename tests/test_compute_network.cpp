@@ -28,6 +28,7 @@
    in the doc, 0-based here).
 ------------------------------------------------------------------------- */
 
+#include "compute_grflow_network.h"
 #include "lammps_fixture.h"
 
 #include "lammps.h"

@@ -30,7 +30,7 @@
 ------------------------------------------------------------------------- */
 
 #include "grflow_overshoot.h"
-#include "grflow_restart.h"
+#include "grflow_host.h"
 #include "lammps_fixture.h"
 
 #include <cstring>
@@ -474,7 +474,7 @@ TEST(Compress, ReadsRestartWithoutDampingState)
 TEST(Compress, DamagedRestartData)
 {
   // the fix's block of a restart file goes through the checks of
-  // grflow_restart.h (tested in full for fix grflow/wall): a version from
+  // grflow_host.h (tested in full for fix grflow/wall): a version from
   // the future and a NaN value are errors naming this fix
   const std::string file = workfile("compress_damage.restart");
   {

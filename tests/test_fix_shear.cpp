@@ -178,10 +178,13 @@ TEST_F(Shear, WallVelocityAndReversalRule)
       xerr = std::max(xerr, std::fabs(r.sh[ShearVector::XWALL] - xw));
       EXPECT_EQ(r.sh[ShearVector::XWALL], r.wall[WallVector::HI_DX]);
     }
-    // tau, p, r_u of the fix are those of the compute at the same step
+    // tau and p of the fix are those of the compute at the same step, r_u
+    // the fix's own, 1 - p/p0 with its p0 (the compute has no p0)
     ASSERT_EQ(r.sh[ShearVector::TAU], r.net[NetVector::TAU]) << r.step;
     ASSERT_EQ(r.sh[ShearVector::PRESS], r.net[NetVector::PRESS]) << r.step;
-    ASSERT_EQ(r.sh[ShearVector::RU], r.net[NetVector::RU]) << r.step;
+    ASSERT_EQ(r.sh[ShearVector::RU], 1.0 - r.net[NetVector::PRESS] / r.sh[ShearVector::P0])
+        << r.step;
+    ASSERT_EQ(r.net[NetVector::RU], 0.0) << r.step;
     // the rule, applied by hand
     const double tau = r.net[NetVector::TAU];
     int event = 0;
@@ -282,53 +285,64 @@ TEST_F(Shear, P0RuAndInitialLiquefaction)
   ASSERT_GT(n_il, 0.0);
 }
 
-// p0 has one owner: the fix records it when shearing starts, so a compute
-// with a p0 keyword of its own is refused (the fix used to overwrite it)
-TEST_F(Shear, ComputeWithItsOwnP0IsRefused)
+// data flow one way: the fix reads the compute's stress and derives r_u
+// itself with the p0 it took when shearing started; a compute with a p0
+// keyword keeps its own r_u, which the fix neither reads nor changes
+TEST_F(Shear, ComputeWithItsOwnP0KeepsIt)
 {
   for (const char *p0 : {"p0 1.0e5", "p0 first"}) {
     Lammps lmp;
     const double p = read(lmp);
     lmp.cmds({"uncompute net",
               std::string("compute net all grflow/network zlimits v_zlo v_zhi ") + p0,
-              shear_cmd(p, "liquefaction 0.3")});
-    const std::string msg = lmp.error_of("run 0 post no");
-    EXPECT_NE(msg.find("sets p0 of compute net when shearing starts: remove the compute's p0 "
-                       "keyword"),
-              std::string::npos)
-        << p0 << ": " << msg;
+              shear_cmd(p, "liquefaction 0.3"), "run 100 post no"});
+    const auto f = fvec(lmp, "sh", ShearVector::NOUT);
+    const auto c = cvec(lmp, "net");
+    // the compute's r_u with its p0: 1e5, or the pressure of its first
+    // evaluation (before the run: the fix's p0 is the same one)
+    EXPECT_EQ(c[NetVector::RU], 1.0 - c[NetVector::PRESS] / (p0[3] == '1' ? 1.0e5 : f[ShearVector::P0]))
+        << p0;
+    // the fix's r_u with its own p0, from the pressure of its last check
+    EXPECT_GT(f[ShearVector::P0], 0.0) << p0;
+    EXPECT_EQ(f[ShearVector::RU], 1.0 - f[ShearVector::PRESS] / f[ShearVector::P0]) << p0;
   }
 }
 
-// p0 of the compute's r_u has one owner: two fixes cannot shear with one compute
-TEST_F(Shear, TwoFixesOnOneComputeAreRefused)
+// two fixes may shear with one compute: each has its own p0 and r_u
+TEST_F(Shear, TwoFixesShareOneCompute)
 {
   Lammps lmp;
   const double p = read(lmp);
   lmp.cmds({shear_cmd(p), "fix sh2 all grflow/shear w net " + fmt_double(VX) + " " +
-                              fmt_double(0.3 * p)});
-  const std::string msg = lmp.error_of("run 0 post no");
-  EXPECT_NE(msg.find("shears with compute net too, and each sets p0 of its r_u"),
-            std::string::npos)
-      << msg;
+                              fmt_double(0.3 * p) + " progress no",
+            "run 100 post no"});
+  const auto f1 = fvec(lmp, "sh", ShearVector::NOUT);
+  const auto f2 = fvec(lmp, "sh2", ShearVector::NOUT);
+  EXPECT_EQ(f1[ShearVector::P0], f2[ShearVector::P0]);    // both took the same start
+  EXPECT_EQ(f1[ShearVector::RU], f2[ShearVector::RU]);
+  EXPECT_EQ(f1[ShearVector::RU], 1.0 - f1[ShearVector::PRESS] / f1[ShearVector::P0]);
 }
 
-// the compute's r_u is that of the fix's p0, at the start (0) and after it
-TEST_F(Shear, ComputeReadsTheFixP0)
+// the fix's r_u is 1 - p/p0 of its own p0, at the start (0) and after it;
+// the compute without a p0 keyword has r_u = 0 throughout
+TEST_F(Shear, FixOwnsItsRu)
 {
   Lammps lmp;
   const double p = read(lmp);
-  EXPECT_EQ(cvec(lmp, "net")[NetVector::RU], 0.0);    // no p0 yet
+  EXPECT_EQ(cvec(lmp, "net")[NetVector::RU], 0.0);    // no p0
   lmp.cmds({shear_cmd(p), "run 0 post no"});
   const auto f = fvec(lmp, "sh", ShearVector::NOUT);
   const auto c = cvec(lmp, "net");
   EXPECT_GT(f[ShearVector::P0], 0.0);
-  EXPECT_EQ(c[NetVector::RU], 1.0 - c[NetVector::PRESS] / f[ShearVector::P0]);
+  EXPECT_EQ(f[ShearVector::P0], c[NetVector::PRESS]);    // taken at the start
+  EXPECT_EQ(f[ShearVector::RU], 0.0);
+  EXPECT_EQ(c[NetVector::RU], 0.0);
   lmp.cmd("run 100 post no");
   const auto f2 = fvec(lmp, "sh", ShearVector::NOUT);
   const auto c2 = cvec(lmp, "net");
   EXPECT_EQ(f2[ShearVector::P0], f[ShearVector::P0]);
-  EXPECT_EQ(c2[NetVector::RU], 1.0 - c2[NetVector::PRESS] / f[ShearVector::P0]);
+  EXPECT_EQ(f2[ShearVector::RU], 1.0 - f2[ShearVector::PRESS] / f[ShearVector::P0]);
+  EXPECT_EQ(c2[NetVector::RU], 0.0);
 }
 
 TEST_F(Shear, GluedLayerMovesWithTheWall)
@@ -550,7 +564,7 @@ TEST_F(Shear, RestartContinuesTheProtocol)
 TEST_F(Shear, DamagedRestartData)
 {
   // the fix's block of a restart file goes through the checks of
-  // grflow_restart.h (tested in full for fix grflow/wall): a version from
+  // grflow_host.h (tested in full for fix grflow/wall): a version from
   // the future and a NaN value are errors naming this fix
   const std::string file = workfile("shear_damage.restart");
   double p;

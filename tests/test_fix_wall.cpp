@@ -27,7 +27,7 @@
 ------------------------------------------------------------------------- */
 
 #include "grflow_contact.h"
-#include "grflow_restart.h"
+#include "grflow_host.h"
 #include "lammps_fixture.h"
 
 #include <array>
@@ -1322,7 +1322,7 @@ TEST(FixWallErrors, RespaAndRestartMismatch)
       << msg;
 }
 
-// The wall's restart data carry a header (grflow_restart.h): a restart
+// The wall's restart data carry a header (grflow_host.h): a restart
 // file whose block was written by a newer format, has another size or
 // holds a non-finite value stops read_restart's fix command with an error
 // that names the fix.  The damage is made in the bytes of a written file,

@@ -111,13 +111,13 @@ TEST(WallNormalForce, TensionIsTouchingNotForceBearing)
   auto *lmpp = static_cast<LAMMPS_NS::LAMMPS *>(lmp.handle);
   auto *wall = dynamic_cast<LAMMPS_NS::FixGRFLOWWall *>(lmpp->modify->get_fix_by_id("w"));
   ASSERT_NE(wall, nullptr);
-  EXPECT_EQ(wall->normal_law(), NORMAL_UNCLIPPED);
+  EXPECT_EQ(wall->cell().normal_law(), NORMAL_UNCLIPPED);
   int tension = 0, pushing = 0;
   lmp.cmd("run 0");
   for (int step = 0; step < 400; step++) {
     lmp.cmd("run 1 pre no post no");
     const double fz = lmp.fix_vector("w", 3)[2];
-    const double arm = wall->contact_arm(0, LAMMPS_NS::FixGRFLOWWall::LO);
+    const double arm = wall->cell().contact_arm(0, LAMMPS_NS::GRFLOW::FlatWalls::LO);
     if (fz > 0.0) {
       ++tension;
       EXPECT_EQ(arm, -1.0) << "step " << step;

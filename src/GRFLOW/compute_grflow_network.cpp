@@ -19,26 +19,27 @@
    Stress (from contact forces), coordination, connectivity and fabric
    anisotropy of the particles in a sub-volume, after Eqs. (1)-(3) of
    "Geometrical network of granular materials under isochoric cyclic
-   shearing".  Contacts are taken from the pair style's own neighbor list
-   through Pair::single(), so that the stored contact history is used.
+   shearing".  Contacts between particles are taken from the pair style's
+   own neighbor list with the contact history it keeps
+   (GRFLOW::PairContacts of grflow_host_api.h: Pair::single() in LAMMPS);
+   contacts with walls from every fix that offers them through
+   extract("grflow/wall_contacts") (fix grflow/wall).  The sums and what
+   is derived from them are host-free (src/shared/grflow_network.h).
 ------------------------------------------------------------------------- */
 
 #include "compute_grflow_network.h"
 
-#include "grflow_contact.h"
+#include "grflow_host_api.h"
 #include "grflow_network.h"
-#include "grflow_restart.h"
 
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
-#include "fix_grflow_shear.h"
-#include "fix_grflow_wall.h"
+#include "fix.h"
 #include "force.h"
 #include "input.h"
 #include "memory.h"
-#include "modify.h"
 #include "neigh_list.h"
 #include "pair.h"
 #include "region.h"
@@ -51,31 +52,36 @@
 
 using namespace LAMMPS_NS;
 
+// the fixes whose wall contacts the sums include, in definition order
+struct GRFLOW::NetworkWalls {
+  std::vector<Fix *> fixes;
+};
+
 enum { INSIDE, NCONTACTS };
 
 /* ---------------------------------------------------------------------- */
 
 ComputeGRFLOWNetwork::ComputeGRFLOWNetwork(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), region(nullptr), p0_owner(nullptr), invoked_stress(-1),
-    inside(nullptr), ncontact(nullptr)
+    Compute(lmp, narg, arg), opt(nullptr), walls(nullptr), region(nullptr), stress(nullptr),
+    invoked_stress(-1), nmax(0), inside(nullptr), ncontact(nullptr), commflag(INSIDE)
 {
-  nmax = 0;
-  commflag = INSIDE;
-
+  opt = new GRFLOW::NetworkOptions;
+  walls = new GRFLOW::NetworkWalls;
   GRFLOW::FixHost host{lmp};
-  opt.parse(narg, arg, 3, host);
-  if (!opt.region.empty() && !domain->get_region_by_id(opt.region))
-    error->all(FLERR, "Region {} for compute grflow/network does not exist", opt.region);
+  opt->parse(narg, arg, 3, host);
+  if (!opt->region.empty() && !GRFLOW::region_by_id(lmp, opt->region))
+    error->all(FLERR, "Region " + opt->region + " for compute grflow/network does not exist");
 
   if (!atom->radius_flag)
     error->all(FLERR, "Compute grflow/network requires atom attribute radius (atom_style sphere)");
 
   vector_flag = 1;
-  size_vector = NetworkLayout::size(opt.cmax);
+  size_vector = GRFLOW::NetworkLayout::size(opt->cmax);
   extvector = 0;
   vector = new double[size_vector];
   for (int k = 0; k < size_vector; k++) vector[k] = 0.0;
-  for (double &value : stress) value = 0.0;
+  stress = new double[GRFLOW::NetworkLayout::NSTRESS];
+  for (int k = 0; k < GRFLOW::NetworkLayout::NSTRESS; k++) stress[k] = 0.0;
 
   comm_forward = 1;
   comm_reverse = 1;
@@ -86,6 +92,9 @@ ComputeGRFLOWNetwork::ComputeGRFLOWNetwork(LAMMPS *lmp, int narg, char **arg) :
 ComputeGRFLOWNetwork::~ComputeGRFLOWNetwork()
 {
   delete[] vector;
+  delete[] stress;
+  delete walls;
+  delete opt;
   memory->destroy(inside);
   memory->destroy(ncontact);
 }
@@ -98,57 +107,45 @@ void ComputeGRFLOWNetwork::init()
 }
 
 /* ----------------------------------------------------------------------
-   pair style, region, wall fixes and variables; done at init() and again
-   by compute_vector() between runs, where the library interface can call
-   it on a compute that was defined after the last run and never
-   initialized
+   pair style, region, the fixes with wall contacts and variables; done at
+   init() and again by compute_vector() between runs, where the library
+   interface can call it on a compute that was defined after the last run
+   and never initialized
 ------------------------------------------------------------------------- */
 
 void ComputeGRFLOWNetwork::check_setup()
 {
-  Pair *pair = force->pair;
-  if (!pair) error->all(FLERR, "Compute grflow/network requires a pair style");
-  if (!pair->single_enable || !pair->finitecutflag || !pair->svector || pair->single_extra < 3)
-    error->all(FLERR,
-               "Compute grflow/network requires a granular pair style with single() "
-               "giving the sliding force in svector[0-2] (granular/grflow, granular, gran/*), "
-               "not {}",
-               force->pair_style);
+  GRFLOW::PairContacts::check(lmp, "Compute grflow/network");
 
-  if (!opt.region.empty()) {
-    region = domain->get_region_by_id(opt.region);
+  region = nullptr;
+  if (!opt->region.empty()) {
+    region = GRFLOW::region_by_id(lmp, opt->region);
     if (!region)
-      error->all(FLERR, "Region {} for compute grflow/network does not exist", opt.region);
-    if (opt.volume.empty() && (strcmp(region->style, "block") != 0 || !region->interior))
+      error->all(FLERR, "Region " + opt->region + " for compute grflow/network does not exist");
+    if (opt->volume.empty() && (strcmp(region->style, "block") != 0 || !region->interior))
       error->all(FLERR,
-                 "Compute grflow/network region {} is not an inside block: give its "
-                 "volume with the volume keyword",
-                 opt.region);
-  }
-  walls.clear();
-  for (auto *ifix : modify->get_fix_by_style("^grflow/wall$")) {
-    auto *wfix = dynamic_cast<FixGRFLOWWall *>(ifix);
-    if (!wfix)
-      error->all(FLERR,
-                 "Compute grflow/network cannot read fix {}: it comes from another build "
-                 "of GRFLOW (plugin and built-in styles mixed)",
-                 ifix->id);
-    walls.push_back(wfix);
-  }
-  // the owner of p0 (none with the p0 keyword: fix grflow/shear refuses it)
-  p0_owner = nullptr;
-  for (auto *ifix : modify->get_fix_by_style("^grflow/shear$")) {
-    auto *shear = dynamic_cast<FixGRFLOWShear *>(ifix);
-    if (shear && shear->network_id() == id) p0_owner = shear;
+                 "Compute grflow/network region " + opt->region +
+                     " is not an inside block: give its volume with the volume keyword");
   }
 
-  for (const std::string &str : {opt.zlo, opt.zhi, opt.volume}) {
-    const char *s = str.c_str();
-    if (strncmp(s, "v_", 2) != 0) continue;
-    const int ivar = input->variable->find(s + 2);
-    if (ivar < 0) error->all(FLERR, "Variable {} for compute grflow/network does not exist", s + 2);
+  // every fix that offers wall contacts (fix grflow/wall): its per-atom
+  // array holds them, and extract() says so
+  walls->fixes.clear();
+  for (Fix *ifix : GRFLOW::all_fixes(lmp)) {
+    int dim = -1;
+    if (ifix->peratom_flag && ifix->size_peratom_cols > 0 &&
+        ifix->extract("grflow/wall_contacts", dim))
+      walls->fixes.push_back(ifix);
+  }
+
+  for (const std::string &str : {opt->zlo, opt->zhi, opt->volume}) {
+    if (str.compare(0, 2, "v_") != 0) continue;
+    const std::string name = str.substr(2);
+    const int ivar = GRFLOW::variable_index(lmp, name);
+    if (ivar < 0)
+      error->all(FLERR, "Variable " + name + " for compute grflow/network does not exist");
     if (!input->variable->equalstyle(ivar))
-      error->all(FLERR, "Variable {} for compute grflow/network is not equal-style", s + 2);
+      error->all(FLERR, "Variable " + name + " for compute grflow/network is not equal-style");
   }
 }
 
@@ -156,16 +153,21 @@ void ComputeGRFLOWNetwork::check_setup()
    value of a number or v_name argument
 ------------------------------------------------------------------------- */
 
-double ComputeGRFLOWNetwork::eval(const char *str, const char *what)
+double ComputeGRFLOWNetwork::eval(const std::string &str, const char *what)
 {
-  if (strncmp(str, "v_", 2) != 0) return utils::numeric(FLERR, str, false, lmp);
-  const int ivar = input->variable->find(str + 2);
+  GRFLOW::FixHost host{lmp};
+  if (str.compare(0, 2, "v_") != 0)
+    return host.number(FLERR, str.c_str(), std::string("compute grflow/network ") + what);
+  const std::string name = str.substr(2);
+  const int ivar = GRFLOW::variable_index(lmp, name);
   if (ivar < 0)
-    error->all(FLERR, "Variable {} for compute grflow/network {} does not exist", str + 2, what);
+    error->all(FLERR,
+               "Variable " + name + " for compute grflow/network " + what + " does not exist");
   const double value = input->variable->compute_equal(ivar);
   if (!std::isfinite(value))
-    error->all(FLERR, "Compute grflow/network {}: variable {} is {}, not a finite number", what,
-               str + 2, value);
+    error->all(FLERR,
+               std::string("Compute grflow/network ") + what + ": variable " + name + " is " +
+                   host.text(value) + ", not a finite number");
   return value;
 }
 
@@ -181,8 +183,8 @@ void ComputeGRFLOWNetwork::set_inside(double &volume)
 
   if (region) {
     region->prematch();
-    if (!opt.volume.empty()) {
-      volume = eval(opt.volume.c_str(), "volume");
+    if (!opt->volume.empty()) {
+      volume = eval(opt->volume, "volume");
     } else {
       const double lo[3] = {region->extent_xlo, region->extent_ylo, region->extent_zlo};
       const double hi[3] = {region->extent_xhi, region->extent_yhi, region->extent_zhi};
@@ -191,18 +193,25 @@ void ComputeGRFLOWNetwork::set_inside(double &volume)
     for (int i = 0; i < nlocal; i++)
       inside[i] = ((mask[i] & groupbit) && region->match(x[i][0], x[i][1], x[i][2])) ? 1.0 : 0.0;
   } else {
-    const double zlo = opt.zlo.empty() ? domain->boxlo[2] : eval(opt.zlo.c_str(), "zlimits");
-    const double zhi = opt.zhi.empty() ? domain->boxhi[2] : eval(opt.zhi.c_str(), "zlimits");
+    const double zlo = opt->zlo.empty() ? domain->boxlo[2] : eval(opt->zlo, "zlimits");
+    const double zhi = opt->zhi.empty() ? domain->boxhi[2] : eval(opt->zhi, "zlimits");
+    GRFLOW::FixHost host{lmp};
     if (!(zhi > zlo))
-      error->all(FLERR, "Compute grflow/network zlimits must have zlo < zhi, got {} {}", zlo, zhi);
+      error->all(FLERR,
+                 "Compute grflow/network zlimits must have zlo < zhi, got " + host.text(zlo) + " " +
+                     host.text(zhi));
     double lo, hi;
-    opt.slab_bounds(zlo, zhi, lo, hi);
+    opt->slab_bounds(zlo, zhi, lo, hi);
     volume = domain->xprd * domain->yprd * (hi - lo);
     GRFLOW::NetworkVolume::flag_slab(x, mask, groupbit, nlocal, lo, hi, domain->zperiodic != 0,
                                      domain->boxlo[2], domain->boxhi[2], domain->zprd, inside);
   }
-  if (!(volume > 0.0) || !std::isfinite(volume))
-    error->all(FLERR, "Compute grflow/network sub-volume is {}: must be finite and > 0", volume);
+  if (!(volume > 0.0) || !std::isfinite(volume)) {
+    GRFLOW::FixHost host{lmp};
+    error->all(FLERR,
+               "Compute grflow/network sub-volume is " + host.text(volume) +
+                   ": must be finite and > 0");
+  }
 }
 
 /* ---------------------------------------------------------------------- */
@@ -212,7 +221,7 @@ void ComputeGRFLOWNetwork::compute_vector()
   invoked_vector = update->ntimestep;
   evaluate(true, vector);
   // its stress entries are those compute_stress() would give
-  for (int k = 0; k < NSTRESS; k++) stress[k] = vector[k];
+  for (int k = 0; k < GRFLOW::NetworkLayout::NSTRESS; k++) stress[k] = vector[k];
   invoked_stress = update->ntimestep;
 }
 
@@ -253,40 +262,39 @@ void ComputeGRFLOWNetwork::evaluate(bool network, double *out)
   // per processor: stress sums sum l (x) f (9), fabric sums sum n (x) n (9),
   // particles inside, floaters, contact ends, histogram of contact numbers
   // (the stress path fills only the first 9)
-  std::vector<double> local(GRFLOW::NetworkSums::size(opt.cmax), 0.0);
+  std::vector<double> local(GRFLOW::NetworkSums::size(opt->cmax), 0.0);
   sum_pair_contacts(local.data(), network);
   sum_wall_contacts(local.data(), network);
   if (network) count_particles(local.data());
-  opt.reduce_and_derive(world, local, volume, out, network, p0_owner ? p0_owner->p0() : 0.0);
+  opt->reduce_and_derive(world, local, volume, out, network);
 }
 
 /* ----------------------------------------------------------------------
-   the pair style's neighbor list exists and every wall fix recorded its
-   contacts on this step
+   the pair style's neighbor list exists and every fix with wall contacts
+   recorded them on this step
 ------------------------------------------------------------------------- */
 
 void ComputeGRFLOWNetwork::require_current_contacts()
 {
-  NeighList *list = force->pair->list;
-  if (!list || !list->numneigh)
-    error->all(FLERR,
-               "Compute grflow/network needs the pair style's neighbor list: "
-               "use it after a run (run 0 will do)");
+  GRFLOW::PairContacts::require_list(lmp, "Compute grflow/network");
   // the wall contacts are those its post_force() recorded on this step: a
   // fix that invokes the compute in its setup() before the wall fix's
   // setup() has run (it was defined first) would read the last run's
-  for (auto *wfix : walls) {
-    if (wfix->contacts_step() == update->ntimestep) continue;
+  for (Fix *wfix : walls->fixes) {
+    int dim = -1;
+    const auto *contacts =
+        static_cast<const GRFLOW::WallContacts *>(wfix->extract("grflow/wall_contacts", dim));
+    if (contacts->step == update->ntimestep) continue;
     if (update->whichflag == 2)
       error->all(FLERR,
-                 "Compute grflow/network {} cannot be used during a minimization: fix "
-                 "grflow/wall {} records no wall contacts there",
-                 id, wfix->id);
+                 std::string("Compute grflow/network ") + id +
+                     " cannot be used during a minimization: fix " + wfix->style + " " + wfix->id +
+                     " records no wall contacts there");
     error->all(FLERR,
-               "Compute grflow/network {}: fix grflow/wall {} has no contacts for step "
-               "{}: define it before the fixes that invoke this compute, and use the compute "
-               "after a run (run 0 will do)",
-               id, wfix->id, update->ntimestep);
+               std::string("Compute grflow/network ") + id + ": fix " + wfix->style + " " +
+                   wfix->id + " has no contacts for step " + std::to_string(update->ntimestep) +
+                   ": define it before the fixes that invoke this compute, and use the compute "
+                   "after a run (run 0 will do)");
   }
 }
 
@@ -332,8 +340,7 @@ double ComputeGRFLOWNetwork::refresh_ghosts_and_inside()
 
 void ComputeGRFLOWNetwork::sum_pair_contacts(double *sums, bool network)
 {
-  Pair *pair = force->pair;
-  NeighList *list = pair->list;
+  NeighList *list = force->pair->list;
   const int nlocal = atom->nlocal;
   const int nall = nlocal + atom->nghost;
   if (network)
@@ -341,24 +348,21 @@ void ComputeGRFLOWNetwork::sum_pair_contacts(double *sums, bool network)
 
   double **x = atom->x;
   const double *radius = atom->radius;
-  const int *type = atom->type;
-  const int newton_pair = force->newton_pair;
-  const double *special_lj = force->special_lj;
-  const double *svector = pair->svector;
+  const bool newton_pair = force->newton_pair != 0;
+  GRFLOW::PairContacts contacts(lmp);
 
   for (int ii = 0; ii < list->inum; ii++) {
     const int i = list->ilist[ii];
     const int *jlist = list->firstneigh[i];
     const int jnum = list->numneigh[i];
     for (int jj = 0; jj < jnum; jj++) {
-      int j = jlist[jj];
-      const double factor_lj = special_lj[sbmask(j)];
-      j &= NEIGHMASK;
-      if (factor_lj == 0.0) continue;
+      const double factor = contacts.factor(jlist[jj]);
+      const int j = jlist[jj] & NEIGHMASK;
+      if (factor == 0.0) continue;
 
       bool use_i, use_j;
-      GRFLOW::NetworkSums::count_ends(inside[i] > 0.0, inside[j] > 0.0, j < nlocal,
-                                      newton_pair != 0, use_i, use_j);
+      GRFLOW::NetworkSums::count_ends(inside[i] > 0.0, inside[j] > 0.0, j < nlocal, newton_pair,
+                                      use_i, use_j);
       if (!use_i && !use_j) continue;
 
       const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
@@ -366,20 +370,15 @@ void ComputeGRFLOWNetwork::sum_pair_contacts(double *sums, bool network)
       const double radsum = radius[i] + radius[j];
       if (rsq >= radsum * radsum) continue;
 
-      double fpair = 0.0;
-      pair->single(i, j, type[i], type[j], rsq, 1.0, factor_lj, fpair);
-      if (fpair <= 0.0) continue;    // touching but carrying no normal force
-
-      const double r = sqrt(rsq);
-      const double n[3] = {del[0] / r, del[1] / r, del[2] / r};
-      const double f[3] = {fpair * del[0] + svector[0], fpair * del[1] + svector[1],
-                           fpair * del[2] + svector[2]};
+      double n[3], f[3], delta;
+      // touching but carrying no normal force: not a contact of the network
+      if (!contacts.contact(i, j, jj, del, rsq, factor, n, f, delta)) continue;
       if (network) {
         if (use_i) ncontact[i] += 1.0;
         if (use_j) ncontact[j] += 1.0;
       }
-      GRFLOW::NetworkSums::add_pair_contact(sums, n, f, radsum - r, radius[i], radius[j], use_i,
-                                            use_j, network);
+      GRFLOW::NetworkSums::add_pair_contact(sums, n, f, delta, radius[i], radius[j], use_i, use_j,
+                                            network);
     }
   }
 
@@ -390,13 +389,19 @@ void ComputeGRFLOWNetwork::sum_pair_contacts(double *sums, bool network)
 }
 
 /* ----------------------------------------------------------------------
-   contacts of owned particles inside with GRFLOW walls (the force-bearing
-   ones its post_force() recorded on this step): n is the wall normal
+   contacts of owned particles inside with walls (the force-bearing ones
+   each fix with wall contacts recorded on this step): n is the wall
+   normal
 ------------------------------------------------------------------------- */
 
 void ComputeGRFLOWNetwork::sum_wall_contacts(double *sums, bool network)
 {
-  GRFLOW::add_wall_contacts(walls, inside, atom->nlocal, network ? ncontact : nullptr, sums);
+  for (Fix *wfix : walls->fixes) {
+    int dim = -1;
+    const auto *contacts =
+        static_cast<const GRFLOW::WallContacts *>(wfix->extract("grflow/wall_contacts", dim));
+    GRFLOW::add_wall_contacts(*contacts, inside, atom->nlocal, network ? ncontact : nullptr, sums);
+  }
 }
 
 /* ----------------------------------------------------------------------
@@ -406,7 +411,7 @@ void ComputeGRFLOWNetwork::sum_wall_contacts(double *sums, bool network)
 
 void ComputeGRFLOWNetwork::count_particles(double *sums)
 {
-  GRFLOW::add_particles(inside, ncontact, atom->nlocal, opt.cmax, sums);
+  GRFLOW::add_particles(inside, ncontact, atom->nlocal, opt->cmax, sums);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -450,12 +455,12 @@ double ComputeGRFLOWNetwork::memory_usage()
 /* ---------------------------------------------------------------------- */
 
 ComputeGRFLOWNetwork *ComputeGRFLOWNetwork::find(LAMMPS *lmp, const std::string &caller,
-                                                 const char *id)
+                                                 const std::string &id)
 {
-  auto *icompute = lmp->modify->get_compute_by_id(id);
-  if (!icompute) lmp->error->all(FLERR, "{}: compute {} does not exist", caller, id);
+  Compute *icompute = GRFLOW::compute_by_id(lmp, id);
+  if (!icompute) lmp->error->all(FLERR, caller + ": compute " + id + " does not exist");
   auto *network = dynamic_cast<ComputeGRFLOWNetwork *>(icompute);
   if (!network || strcmp(icompute->style, "grflow/network") != 0)
-    lmp->error->all(FLERR, "{}: compute {} is not a compute grflow/network", caller, id);
+    lmp->error->all(FLERR, caller + ": compute " + id + " is not a compute grflow/network");
   return network;
 }

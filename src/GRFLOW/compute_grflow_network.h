@@ -21,23 +21,18 @@ ComputeStyle(grflow/network,ComputeGRFLOWNetwork);
 #define LMP_COMPUTE_GRFLOW_NETWORK_H
 
 #include "compute.h"
-#include "grflow_network.h"
-
-#include <string>
-#include <vector>
 
 namespace LAMMPS_NS {
+namespace GRFLOW {
+  struct NetworkOptions;
+  struct NetworkWalls;
+}    // namespace GRFLOW
 
-// the positions of the output vector: ComputeGRFLOWNetwork::SXX, ... PC0
-// (GRFLOW::NetworkLayout, shared with the LIGGGHTS build)
-class ComputeGRFLOWNetwork : public Compute, public GRFLOW::NetworkLayout {
+// the positions of the output vector: GRFLOW::NetworkLayout (grflow_network.h)
+class ComputeGRFLOWNetwork : public Compute {
  public:
   ComputeGRFLOWNetwork(class LAMMPS *, int, char **);
   ~ComputeGRFLOWNetwork() override;
-
-  // the compute grflow/network with ID id, for another command (caller,
-  // e.g. "Fix grflow/shear"); an error otherwise
-  static ComputeGRFLOWNetwork *find(class LAMMPS *lmp, const std::string &caller, const char *id);
   void init() override;
   void compute_vector() override;
   int pack_forward_comm(int, int *, double *, int, int *) override;
@@ -45,6 +40,11 @@ class ComputeGRFLOWNetwork : public Compute, public GRFLOW::NetworkLayout {
   int pack_reverse_comm(int, int, double *) override;
   void unpack_reverse_comm(int, int *, double *) override;
   double memory_usage() override;
+
+  // the compute grflow/network with ID id, for another command (caller,
+  // e.g. "Fix grflow/shear"); an error otherwise
+  static ComputeGRFLOWNetwork *find(class LAMMPS *lmp, const std::string &caller,
+                                    const std::string &id);
 
   // the entries SXX..RU (the first NSTRESS of the vector) of this step,
   // for fixes that need no more (the reversal check of fix grflow/shear,
@@ -56,20 +56,12 @@ class ComputeGRFLOWNetwork : public Compute, public GRFLOW::NetworkLayout {
   const double *compute_stress();
   const double *current_stress();
 
-  // true if the command gave the p0 keyword (then no fix may own p0: a
-  // fix grflow/shear refuses the compute; each p0 has one owner).  Without
-  // it, p0 of r_u is that of the fix grflow/shear that names this compute
-  // (GRFLOW::NetworkOptions::reference_p0()).
-  bool has_p0_keyword() const { return opt.p0_keyword; }
-
  private:
-  GRFLOW::NetworkOptions opt;    // the keywords (grflow_network.h)
+  GRFLOW::NetworkOptions *opt;    // the keywords (grflow_network.h)
+  GRFLOW::NetworkWalls *walls;    // the fixes with wall contacts
   class Region *region;
 
-  std::vector<class FixGRFLOWWall *> walls;
-  class FixGRFLOWShear *p0_owner;    // the fix grflow/shear of this compute, if any
-
-  double stress[NSTRESS];    // compute_stress()'s entries, of step invoked_stress
+  double *stress;    // compute_stress()'s entries, of step invoked_stress
   bigint invoked_stress;
 
   int nmax;
@@ -78,7 +70,7 @@ class ComputeGRFLOWNetwork : public Compute, public GRFLOW::NetworkLayout {
   int commflag;
 
   void check_setup();
-  double eval(const char *, const char *);
+  double eval(const std::string &, const char *);
   void set_inside(double &volume);
   void require_current_contacts();
   void grow_peratom();

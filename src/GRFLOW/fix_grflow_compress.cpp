@@ -24,17 +24,22 @@
    sigma_zz go to a target and stay there.  An axis whose stress keeps
    overshooting the target from one update to the next gets its gain
    halved.  Reports the stresses, the kinetic-to-elastic energy ratio and
-   a convergence flag.
+   a convergence flag.  The servo is host-free (grflow_servo.h); this class
+   is compiled into LAMMPS and GRFLOW's LIGGGHTS build alike.
 ------------------------------------------------------------------------- */
 
 #include "fix_grflow_compress.h"
 
-#include "grflow_restart.h"
+#include "grflow_host_api.h"
+#include "grflow_network.h"
+#include "grflow_servo.h"
+#include "grflow_wall.h"
 
 #include "atom.h"
 #include "compute.h"
 #include "compute_grflow_network.h"
 #include "domain.h"
+#include "error.h"
 #include "fix_grflow_wall.h"
 #include "force.h"
 #include "input.h"
@@ -44,33 +49,37 @@
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
+using GRFLOW::FlatWalls;
+using GRFLOW::StressServo;
 
 /* ---------------------------------------------------------------------- */
 
 FixGRFLOWCompress::FixGRFLOWCompress(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), ivar_elastic(-1), wall(nullptr), network(nullptr), pe(nullptr)
+    Fix(lmp, narg, arg), settings(nullptr), servo(nullptr), ivar_elastic(-1), warned_energy(false),
+    wall(nullptr), network(nullptr), pe(nullptr), vsolid(0.0)
 {
+  settings = new GRFLOW::CompressSettings;
+  servo = new GRFLOW::StressServo;
   GRFLOW::FixHost host{lmp};
-  settings.parse(narg, arg, host);
+  settings->parse(narg, arg, host);
   GRFLOW::CompressSettings::check_cell(atom->radius_flag && atom->rmass_flag && atom->omega_flag,
                                        domain->triclinic, domain->xperiodic && domain->yperiodic,
                                        domain->dimension, host);
 
   vector_flag = 1;
-  size_vector = NOUT;
+  size_vector = GRFLOW::CompressLayout::NOUT;
   global_freq = 1;
   extvector = 0;
   restart_global = 1;
-  box_change |= BOX_CHANGE_X | BOX_CHANGE_Y;
+  GRFLOW::declare_box_change_xy(this);
 
   // without an elastic variable the elastic energy is the potential energy
   // of the pair style, tallied on the servo steps only (as fix box/relax
   // does with its compute pe)
-  if (settings.elastic_var.empty()) {
+  if (settings->elastic_var.empty()) {
     id_pe = std::string(id) + "_pe";
-    pe = modify->add_compute(fmt::format("{} all pe", id_pe));
+    pe = GRFLOW::add_compute(lmp, id_pe + " all pe");
   }
-  vsolid = 0.0;
   dt = update->dt;
 }
 
@@ -78,7 +87,9 @@ FixGRFLOWCompress::FixGRFLOWCompress(LAMMPS *lmp, int narg, char **arg) :
 
 FixGRFLOWCompress::~FixGRFLOWCompress()
 {
-  if (!id_pe.empty() && modify->get_compute_by_id(id_pe)) modify->delete_compute(id_pe);
+  if (!id_pe.empty() && GRFLOW::compute_by_id(lmp, id_pe)) GRFLOW::delete_compute(lmp, id_pe);
+  delete servo;
+  delete settings;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -92,17 +103,23 @@ int FixGRFLOWCompress::setmask()
 
 void FixGRFLOWCompress::init()
 {
-  wall = FixGRFLOWWall::find_cell(lmp, "Fix grflow/compress", settings.wall_id.c_str());
-  network = ComputeGRFLOWNetwork::find(lmp, "Fix grflow/compress", settings.network_id.c_str());
+  wall = FixGRFLOWWall::find_cell(lmp, "Fix grflow/compress", settings->wall_id);
+  network = ComputeGRFLOWNetwork::find(lmp, "Fix grflow/compress", settings->network_id);
 
   GRFLOW::FixHost host{lmp};
-  if (settings.elastic_var.empty()) {
-    pe = modify->get_compute_by_id(id_pe);
+  if (settings->elastic_var.empty()) {
+    pe = GRFLOW::compute_by_id(lmp, id_pe);
     GRFLOW::CompressSettings::check_pe(pe != nullptr, id_pe, host);
+    if (!warned_energy && !GRFLOW::pair_tallies_energy(lmp))
+      host.warning(FLERR,
+                   std::string("Fix grflow/compress: pair style ") + force->pair_style +
+                       " tallies no elastic energy, so E_e is 0 and the convergence flag stays 0 "
+                       "while the packing moves; give the elastic energy with elastic v_name");
+    warned_energy = true;    // once, not at every run
   } else {
-    ivar_elastic = input->variable->find(settings.elastic_var.c_str());
+    ivar_elastic = GRFLOW::variable_index(lmp, settings->elastic_var);
     const bool found = ivar_elastic >= 0;
-    settings.check_variable(found, found && input->variable->equalstyle(ivar_elastic), host);
+    settings->check_variable(found, found && input->variable->equalstyle(ivar_elastic), host);
   }
 
   // solid volume of the fix group, for the void ratio
@@ -112,8 +129,11 @@ void FixGRFLOWCompress::init()
 
   dt = update->dt;
 
-  // the energy must be tallied on the step the first servo update reads it
-  schedule_energy(update->ntimestep);
+  // the energy must be tallied on the step the first servo update reads
+  // it: the compute pe here; the computes of an elastic variable are
+  // scheduled for this step by the host's Modify::init()
+  // (addstep_compute_all())
+  if (pe) pe->addstep(update->ntimestep);
 }
 
 /* ----------------------------------------------------------------------
@@ -126,21 +146,21 @@ void FixGRFLOWCompress::init()
 
 void FixGRFLOWCompress::setup(int /*vflag*/)
 {
-  if (servo.updates_at_setup(settings, update->ntimestep))
+  if (servo->updates_at_setup(*settings, update->ntimestep))
     update_servo();
   else
     measure();
-  servo.started = 1;
-  schedule_energy(settings.next_servo_step(update->ntimestep));
+  servo->started = 1;
+  schedule_energy(settings->next_servo_step(update->ntimestep));
 }
 
 /* ---------------------------------------------------------------------- */
 
 void FixGRFLOWCompress::end_of_step()
 {
-  if (settings.servo_step(update->ntimestep)) {
+  if (settings->servo_step(update->ntimestep)) {
     update_servo();
-    schedule_energy(update->ntimestep + settings.servo_every);
+    schedule_energy(update->ntimestep + settings->servo_every);
   }
   deform_box();
 }
@@ -157,7 +177,7 @@ void FixGRFLOWCompress::update_servo()
 {
   measure();
   GRFLOW::FixHost host{lmp};
-  servo.update(settings, id, update->ntimestep, host);
+  servo->update(*settings, id, update->ntimestep, host);
   drive_walls();
 }
 
@@ -168,10 +188,10 @@ void FixGRFLOWCompress::update_servo()
 
 void FixGRFLOWCompress::schedule_energy(bigint step)
 {
-  if (!settings.elastic_var.empty())
-    modify->addstep_compute(step);
-  else
+  if (pe)
     pe->addstep(step);
+  else
+    modify->addstep_compute(step);
 }
 
 /* ----------------------------------------------------------------------
@@ -185,19 +205,19 @@ void FixGRFLOWCompress::measure()
   // variable reading it after the run gets the stresses the servo used,
   // not ones evaluated anew after the box was scaled
   if (network->invoked_vector != update->ntimestep) network->compute_vector();
-  servo.set_stresses(settings, network->vector);
+  servo->set_stresses(*settings, network->vector);
 
   // kinetic energy, translational and rotational, of the fix group
   double kelocal = GRFLOW::kinetic_sum(atom->nlocal, atom->mask, groupbit, atom->v, atom->omega,
                                        atom->rmass, atom->radius);
   double ke;
   MPI_Allreduce(&kelocal, &ke, 1, MPI_DOUBLE, MPI_SUM, world);
-  servo.ke = GRFLOW::kinetic_energy(ke, force->mvv2e);
-  if (!settings.elastic_var.empty()) {
-    modify->clearstep_compute();
-    servo.eel = input->variable->compute_equal(ivar_elastic);
+  servo->ke = GRFLOW::kinetic_energy(ke, force->mvv2e);
+  if (pe) {
+    servo->eel = pe->compute_scalar();
   } else {
-    servo.eel = pe->compute_scalar();
+    modify->clearstep_compute();
+    servo->eel = input->variable->compute_equal(ivar_elastic);
   }
 }
 
@@ -205,9 +225,10 @@ void FixGRFLOWCompress::measure()
 
 void FixGRFLOWCompress::drive_walls()
 {
-  const double vz = servo.wall_speed(GRFLOW::wall_gap(*wall));
-  wall->set_velocity(FixGRFLOWWall::LO, 0.0, 0.0, -vz);
-  wall->set_velocity(FixGRFLOWWall::HI, 0.0, 0.0, vz);
+  FlatWalls &cell = wall->cell();
+  const double vz = servo->wall_speed(cell.gap());
+  cell.set_velocity(FlatWalls::LO, 0.0, 0.0, -vz);
+  cell.set_velocity(FlatWalls::HI, 0.0, 0.0, vz);
 }
 
 /* ----------------------------------------------------------------------
@@ -217,12 +238,17 @@ void FixGRFLOWCompress::drive_walls()
 
 void FixGRFLOWCompress::deform_box()
 {
-  if (!servo.deforms()) return;
-  domain->x2lamda(atom->nlocal, groupbit);
-  for (int a = 0; a < 2; a++) servo.scale(a, dt, domain->boxlo[a], domain->boxhi[a]);
+  if (!servo->deforms()) return;
+  double **x = atom->x;
+  const int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  for (int i = 0; i < nlocal; i++)
+    if (mask[i] & groupbit) domain->x2lamda(x[i], x[i]);
+  for (int a = 0; a < 2; a++) servo->scale(a, dt, domain->boxlo[a], domain->boxhi[a]);
   domain->set_global_box();
   domain->set_local_box();
-  domain->lamda2x(atom->nlocal, groupbit);
+  for (int i = 0; i < nlocal; i++)
+    if (mask[i] & groupbit) domain->lamda2x(x[i], x[i]);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -236,18 +262,17 @@ void FixGRFLOWCompress::reset_dt()
 
 double FixGRFLOWCompress::compute_vector(int n)
 {
-  const double h = wall ? GRFLOW::wall_gap(*wall) : 0.0;
-  return servo.output(n, settings, h, domain->xprd, domain->yprd, vsolid);
+  const double h = wall ? wall->cell().gap() : 0.0;
+  return servo->output(n, *settings, h, domain->xprd, domain->yprd, vsolid);
 }
 
 /* ---------------------------------------------------------------------- */
 
 void FixGRFLOWCompress::write_restart(FILE *fp)
 {
-  double list[GRFLOW::StressServo::NRESTART];
-  servo.pack(list);
-  GRFLOW::write_restart_values(lmp, fp, GRFLOW::StressServo::RESTART_VERSION, list,
-                               GRFLOW::StressServo::NRESTART);
+  double list[StressServo::NRESTART];
+  servo->pack(list);
+  GRFLOW::write_restart_values(lmp, fp, StressServo::RESTART_VERSION, list, StressServo::NRESTART);
 }
 
 /* ----------------------------------------------------------------------
@@ -257,7 +282,7 @@ void FixGRFLOWCompress::write_restart(FILE *fp)
 void FixGRFLOWCompress::restart(char *buf)
 {
   int version;
-  servo.unpack(GRFLOW::read_restart_values(lmp, fmt::format("Fix grflow/compress {}", id), buf,
-                                           GRFLOW::StressServo::RESTART_VERSION,
-                                           GRFLOW::StressServo::NRESTART, version));
+  servo->unpack(GRFLOW::read_restart_values(lmp, std::string("Fix grflow/compress ") + id, buf,
+                                            StressServo::RESTART_VERSION, StressServo::NRESTART,
+                                            version));
 }

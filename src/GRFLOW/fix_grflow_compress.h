@@ -21,14 +21,16 @@ FixStyle(grflow/compress,FixGRFLOWCompress);
 #define LMP_FIX_GRFLOW_COMPRESS_H
 
 #include "fix.h"
-#include "grflow_servo.h"
 
 namespace LAMMPS_NS {
+namespace GRFLOW {
+  struct CompressSettings;
+  struct StressServo;
+}    // namespace GRFLOW
 
-// the positions of the output vector: FixGRFLOWCompress::CONVERGED, ...
-// FACTOR_Z (GRFLOW::CompressLayout, shared with the LIGGGHTS build); the
-// servo itself is GRFLOW::StressServo (grflow_servo.h)
-class FixGRFLOWCompress : public Fix, public GRFLOW::CompressLayout {
+// the positions of the output vector: GRFLOW::CompressLayout
+// (grflow_servo.h); the servo itself is GRFLOW::StressServo
+class FixGRFLOWCompress : public Fix {
  public:
   FixGRFLOWCompress(class LAMMPS *, int, char **);
   ~FixGRFLOWCompress() override;
@@ -42,10 +44,11 @@ class FixGRFLOWCompress : public Fix, public GRFLOW::CompressLayout {
   void restart(char *) override;
 
  private:
-  GRFLOW::CompressSettings settings;    // the arguments
-  GRFLOW::StressServo servo;            // rates, gain factors (restart), last measurements
-  std::string id_pe;                    // the internal compute pe, "" with elastic
+  GRFLOW::CompressSettings *settings;    // the arguments
+  GRFLOW::StressServo *servo;            // rates, gain factors (restart), last measurements
+  std::string id_pe;                     // the internal compute pe, "" with elastic
   int ivar_elastic;
+  bool warned_energy;    // that the pair style tallies no energy (once)
   class FixGRFLOWWall *wall;
   class ComputeGRFLOWNetwork *network;
   class Compute *pe;

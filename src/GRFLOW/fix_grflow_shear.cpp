@@ -19,44 +19,53 @@
    Stress-controlled cyclic simple shear at constant height: the top wall
    of a fix grflow/wall (and a glued layer) moves in x at +-vx; the
    direction reverses when tau from a compute grflow/network reaches
-   +tau_amp while moving +x or -tau_amp while moving -x.  Records p0 when
-   shearing starts, initial liquefaction (first r_u >= threshold), the
-   reversal count and the fractional cycle count N (grflow_cycle_count.h);
-   all of it goes to restart files.
+   +tau_amp while moving +x or -tau_amp while moving -x.  Takes p0 when
+   shearing starts and r_u = 1 - p/p0 from the compute's p; records
+   initial liquefaction (first r_u >= threshold), the reversal count and
+   the fractional cycle count N (grflow_cycle_count.h); all of it goes to
+   restart files.  The rules are host-free (grflow_shear_rule.h); this
+   class is compiled into LAMMPS and GRFLOW's LIGGGHTS build alike.
 ------------------------------------------------------------------------- */
 
 #include "fix_grflow_shear.h"
 
-#include "grflow_restart.h"
+#include "grflow_host_api.h"
+#include "grflow_network.h"
+#include "grflow_shear_rule.h"
+#include "grflow_wall.h"
 
 #include "atom.h"
-#include "comm.h"
 #include "compute_grflow_network.h"
 #include "error.h"
 #include "fix_grflow_wall.h"
 #include "group.h"
-#include "modify.h"
-#include "platform.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
+using GRFLOW::FlatWalls;
+using GRFLOW::NetworkLayout;
+using GRFLOW::ShearProtocol;
 
 /* ---------------------------------------------------------------------- */
 
 FixGRFLOWShear::FixGRFLOWShear(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), wall(nullptr), network(nullptr), iglue(-1), gluebit(0)
+    Fix(lmp, narg, arg), settings(nullptr), state(nullptr), progress(nullptr), wall(nullptr),
+    network(nullptr), iglue(-1), gluebit(0)
 {
+  settings = new GRFLOW::ShearSettings;
+  state = new GRFLOW::ShearProtocol;
+  progress = new GRFLOW::ShearProgress;
   GRFLOW::FixHost host{lmp};
-  settings.parse(narg, arg, host);
-  if (!settings.glue.empty()) {
-    iglue = group->find(settings.glue);
-    if (iglue < 0) error->all(FLERR, settings.glue_missing());
+  settings->parse(narg, arg, host);
+  if (!settings->glue.empty()) {
+    iglue = group->find(settings->glue.c_str());
+    if (iglue < 0) error->all(FLERR, settings->glue_missing());
     gluebit = group->bitmask[iglue];
   }
 
   vector_flag = 1;
-  size_vector = NOUT;
+  size_vector = GRFLOW::ShearLayout::NOUT;
   global_freq = 1;
   extvector = 0;
   restart_global = 1;
@@ -72,6 +81,15 @@ FixGRFLOWShear::FixGRFLOWShear(LAMMPS *lmp, int narg, char **arg) :
 
 /* ---------------------------------------------------------------------- */
 
+FixGRFLOWShear::~FixGRFLOWShear()
+{
+  delete progress;
+  delete state;
+  delete settings;
+}
+
+/* ---------------------------------------------------------------------- */
+
 int FixGRFLOWShear::setmask()
 {
   int mask = END_OF_STEP;
@@ -83,52 +101,46 @@ int FixGRFLOWShear::setmask()
 
 void FixGRFLOWShear::init()
 {
-  wall = FixGRFLOWWall::find_cell(lmp, "Fix grflow/shear", settings.wall_id.c_str());
-  network = ComputeGRFLOWNetwork::find(lmp, "Fix grflow/shear", settings.network_id.c_str());
-  if (network->has_p0_keyword()) error->all(FLERR, settings.p0_owner(id));
-  for (auto *ifix : modify->get_fix_by_style("^grflow/shear$")) {
-    auto *other = dynamic_cast<FixGRFLOWShear *>(ifix);
-    if (other && other != this && other->network_id() == settings.network_id)
-      error->all(FLERR, settings.p0_second_owner(id, other->id));
-  }
+  wall = FixGRFLOWWall::find_cell(lmp, "Fix grflow/shear", settings->wall_id);
+  network = ComputeGRFLOWNetwork::find(lmp, "Fix grflow/shear", settings->network_id);
   // group delete guards only a fix's own group
-  if (iglue >= 0 && group->find(settings.glue) != iglue) error->all(FLERR, settings.glue_deleted());
+  if (iglue >= 0 && group->find(settings->glue.c_str()) != iglue)
+    error->all(FLERR, settings->glue_deleted());
   dt = update->dt;
 }
 
 /* ----------------------------------------------------------------------
-   start shearing (first run) or carry on (later runs, restart): the top
-   wall moves in x at direction*vx, never in z, so the height is constant
+   start shearing (first run: p0, direction +1) or carry on (later runs,
+   restart): the top wall moves in x at direction*vx, never in z, so the
+   height is constant
 ------------------------------------------------------------------------- */
 
 void FixGRFLOWShear::setup(int /*vflag*/)
 {
-  const bool first = !state.started;
+  const bool first = !state->started;
   // the whole vector, evaluated afresh (atoms may have been changed
   // between runs since the compute's last evaluation on this step), so
-  // that what reads the compute between runs finds it current; its r_u is
-  // that of this fix's p0 (p0())
+  // that what reads the compute between runs finds it current
   network->compute_vector();
   if (first) {
     GRFLOW::FixHost host{lmp};
-    state.start(network->vector[ComputeGRFLOWNetwork::PRESS], sim_time(), host);
-    network->compute_vector();    // r_u with the p0 just taken
+    state->start(network->vector[NetworkLayout::PRESS], sim_time(), host);
   }
   drive_wall();
-  progress.start(platform::walltime(), update->ntimestep);
+  progress->start(GRFLOW::walltime(), update->ntimestep);
   // read tau, p, r_u for output; apply the reversal and liquefaction rules
   // only where an uninterrupted run would (every N-th step, and the very
   // start), so that a run split at any step (run N run M, read_restart)
   // takes the same decisions as one run
-  check(settings.decides(first, update->ntimestep));
+  check(settings->decides(first, update->ntimestep));
 }
 
 /* ---------------------------------------------------------------------- */
 
 void FixGRFLOWShear::drive_wall()
 {
-  const double vw = state.velocity(settings);
-  wall->set_velocity(FixGRFLOWWall::HI, vw, 0.0, 0.0);
+  const double vw = state->velocity(*settings);
+  wall->cell().set_velocity(FlatWalls::HI, vw, 0.0, 0.0);
   // the glued layer takes the wall velocity at once, so that between steps
   // (output, the setup of a next run) it moves with the wall as well
   if (iglue >= 0) GRFLOW::glue_layer(atom->nlocal, atom->mask, gluebit, vw, atom->v, atom->omega);
@@ -140,7 +152,7 @@ void FixGRFLOWShear::drive_wall()
 
 void FixGRFLOWShear::initial_integrate(int /*vflag*/)
 {
-  GRFLOW::glue_layer(atom->nlocal, atom->mask, gluebit, state.velocity(settings), atom->v,
+  GRFLOW::glue_layer(atom->nlocal, atom->mask, gluebit, state->velocity(*settings), atom->v,
                      atom->omega, dt, atom->x);
 }
 
@@ -148,12 +160,13 @@ void FixGRFLOWShear::initial_integrate(int /*vflag*/)
 
 void FixGRFLOWShear::end_of_step()
 {
-  if (settings.decides(false, update->ntimestep)) check();
+  if (settings->decides(false, update->ntimestep)) check();
 }
 
 /* ----------------------------------------------------------------------
-   read tau, p, r_u and apply the rules (grflow_shear_rule.h); a reversal
-   drives the wall and prints a progress line (screen and log)
+   read tau and p, derive r_u with this fix's p0, and apply the rules
+   (grflow_shear_rule.h); a reversal drives the wall and prints a progress
+   line (screen and log)
 ------------------------------------------------------------------------- */
 
 void FixGRFLOWShear::check(bool decide)
@@ -161,20 +174,20 @@ void FixGRFLOWShear::check(bool decide)
   // the stress sums alone: the network quantities are evaluated only on
   // the steps that output them
   const double *stress = network->current_stress();
-  state.tau = stress[ComputeGRFLOWNetwork::TAU];
-  state.press = stress[ComputeGRFLOWNetwork::PRESS];
-  state.ru = stress[ComputeGRFLOWNetwork::RU];
+  state->tau = stress[NetworkLayout::TAU];
+  state->press = stress[NetworkLayout::PRESS];
+  state->ru = GRFLOW::pore_pressure_ratio(state->press, state->p0);
   if (!decide) return;
   const bigint step = update->ntimestep;
-  if (state.reverse(settings, step, sim_time())) {
+  if (state->reverse(*settings, step, sim_time())) {
     drive_wall();
-    if (settings.progress) {
-      const double gamma = wall->wall(FixGRFLOWWall::HI).disp[0] / GRFLOW::wall_gap(*wall);
-      const std::string line = progress.line(id, state, step, gamma, platform::walltime());
-      if (comm->me == 0) utils::logmesg(lmp, line);
+    if (settings->progress) {
+      const FlatWalls &cell = wall->cell();
+      const double gamma = cell.wall(FlatWalls::HI).disp[0] / cell.gap();
+      GRFLOW::log_text(lmp, progress->line(id, *state, step, gamma, GRFLOW::walltime()));
     }
   }
-  state.liquefied(settings, step, sim_time());
+  state->liquefied(*settings, step, sim_time());
 }
 
 /* ----------------------------------------------------------------------
@@ -197,19 +210,25 @@ void FixGRFLOWShear::reset_dt()
 
 double FixGRFLOWShear::compute_vector(int n)
 {
-  const double xw = wall ? wall->wall(FixGRFLOWWall::HI).disp[0] : 0.0;
-  const double h = wall ? GRFLOW::wall_gap(*wall) : 0.0;
-  return state.output(n, settings, update->ntimestep, wall != nullptr, xw, h);
+  if (!wall) return state->output(n, *settings, update->ntimestep, false, 0.0, 0.0);
+  const FlatWalls &cell = wall->cell();
+  return state->output(n, *settings, update->ntimestep, true, cell.wall(FlatWalls::HI).disp[0],
+                       cell.gap());
 }
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   the values of grflow_shear_rule.h, and where the host's restart files
+   do not keep the simulated time (LIGGGHTS), that time too
+------------------------------------------------------------------------- */
 
 void FixGRFLOWShear::write_restart(FILE *fp)
 {
-  double list[GRFLOW::ShearProtocol::NRESTART];
-  state.pack(list);
-  GRFLOW::write_restart_values(lmp, fp, GRFLOW::ShearProtocol::RESTART_VERSION, list,
-                               GRFLOW::ShearProtocol::NRESTART);
+  double list[ShearProtocol::NRESTART_CLOCK];
+  state->pack(list);
+  const bool clock = !GRFLOW::restart_keeps_time();
+  if (clock) list[ShearProtocol::R_CLOCK] = sim_time();
+  GRFLOW::write_restart_values(lmp, fp, ShearProtocol::RESTART_VERSION, list,
+                               clock ? ShearProtocol::NRESTART_CLOCK : ShearProtocol::NRESTART);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -217,9 +236,16 @@ void FixGRFLOWShear::write_restart(FILE *fp)
 void FixGRFLOWShear::restart(char *buf)
 {
   int version;
-  const double *list = GRFLOW::read_restart_values(lmp, fmt::format("Fix grflow/shear {}", id), buf,
-                                                   GRFLOW::ShearProtocol::RESTART_VERSION,
-                                                   GRFLOW::ShearProtocol::NRESTART, version);
+  const bool clock = !GRFLOW::restart_keeps_time();
+  const double *list = GRFLOW::read_restart_values(
+      lmp, std::string("Fix grflow/shear ") + id, buf, ShearProtocol::RESTART_VERSION,
+      clock ? ShearProtocol::NRESTART_CLOCK : ShearProtocol::NRESTART, version);
   GRFLOW::FixHost host{lmp};
-  state.unpack(id, version, list, host);
+  state->unpack(id, version, list, host);
+  // the clock at the step of the restart file (its run's init sets
+  // atimestep to this step again and keeps atime)
+  if (clock) {
+    update->atime = list[ShearProtocol::R_CLOCK];
+    update->atimestep = update->ntimestep;
+  }
 }

@@ -21,16 +21,20 @@ FixStyle(grflow/shear,FixGRFLOWShear);
 #define LMP_FIX_GRFLOW_SHEAR_H
 
 #include "fix.h"
-#include "grflow_shear_rule.h"
 
 namespace LAMMPS_NS {
+namespace GRFLOW {
+  struct ShearSettings;
+  struct ShearProtocol;
+  struct ShearProgress;
+}    // namespace GRFLOW
 
-// the positions of the output vector: FixGRFLOWShear::DIRECTION, ... EVENT
-// (GRFLOW::ShearLayout, shared with the LIGGGHTS build); the rule itself
-// is GRFLOW::ShearProtocol (grflow_shear_rule.h)
-class FixGRFLOWShear : public Fix, public GRFLOW::ShearLayout {
+// the positions of the output vector: GRFLOW::ShearLayout
+// (grflow_shear_rule.h); the rule itself is GRFLOW::ShearProtocol
+class FixGRFLOWShear : public Fix {
  public:
   FixGRFLOWShear(class LAMMPS *, int, char **);
+  ~FixGRFLOWShear() override;
   int setmask() override;
   void init() override;
   void setup(int) override;
@@ -41,15 +45,10 @@ class FixGRFLOWShear : public Fix, public GRFLOW::ShearLayout {
   void write_restart(FILE *) override;
   void restart(char *) override;
 
-  // the compute grflow/network this fix reads, and p0 of its r_u: this fix
-  // owns p0 (0 until shearing starts); the compute reads it
-  const std::string &network_id() const { return settings.network_id; }
-  double p0() const { return state.p0; }
-
  private:
-  GRFLOW::ShearSettings settings;    // the arguments
-  GRFLOW::ShearProtocol state;       // direction, reversals, N, ... (restart)
-  GRFLOW::ShearProgress progress;    // the progress lines' clock
+  GRFLOW::ShearSettings *settings;    // the arguments
+  GRFLOW::ShearProtocol *state;       // direction, reversals, p0, N, ... (restart)
+  GRFLOW::ShearProgress *progress;    // the progress lines' clock
   class FixGRFLOWWall *wall;
   class ComputeGRFLOWNetwork *network;
   int iglue, gluebit;

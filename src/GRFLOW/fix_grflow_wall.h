@@ -21,30 +21,15 @@ FixStyle(grflow/wall,FixGRFLOWWall);
 #define LMP_FIX_GRFLOW_WALL_H
 
 #include "fix.h"
-#include "grflow_wall.h"
 
 namespace LAMMPS_NS {
+namespace GRFLOW {
+  class FlatWalls;
+  class WallNearList;
+}    // namespace GRFLOW
 
-// the LAMMPS glue of fix grflow/wall; the walls, their contacts and the
-// public interface used by other commands (wall(), set_velocity(),
-// contact_arm(), contact_force(), normal_sign(), contacts_step(), LO, HI,
-// NWALL, Wall) are GRFLOW::FlatWalls, shared with LIGGGHTS
-class FixGRFLOWWall : public Fix, public GRFLOW::FlatWalls {
+class FixGRFLOWWall : public Fix {
  public:
-  // the positions of the output vector (0-based, NVECTOR of them): the
-  // entries GRFLOW::FlatWalls::VEC_FX ... VEC_DY of the lower wall, then
-  // of the upper one
-  // clang-format off
-  enum {
-    LO_FX = LO * VEC_PER_WALL + VEC_FX, LO_FY = LO * VEC_PER_WALL + VEC_FY,
-    LO_FZ = LO * VEC_PER_WALL + VEC_FZ, LO_Z = LO * VEC_PER_WALL + VEC_Z,
-    LO_DX = LO * VEC_PER_WALL + VEC_DX, LO_DY = LO * VEC_PER_WALL + VEC_DY,
-    HI_FX = HI * VEC_PER_WALL + VEC_FX, HI_FY = HI * VEC_PER_WALL + VEC_FY,
-    HI_FZ = HI * VEC_PER_WALL + VEC_FZ, HI_Z = HI * VEC_PER_WALL + VEC_Z,
-    HI_DX = HI * VEC_PER_WALL + VEC_DX, HI_DY = HI * VEC_PER_WALL + VEC_DY
-  };
-  // clang-format on
-
   FixGRFLOWWall(class LAMMPS *, int, char **);
   ~FixGRFLOWWall() override;
   int setmask() override;
@@ -58,6 +43,7 @@ class FixGRFLOWWall : public Fix, public GRFLOW::FlatWalls {
   int modify_param(int, char **) override;
   void write_restart(FILE *) override;
   void restart(char *) override;
+  void *extract(const char *, int &) override;
 
   double memory_usage() override;
   void grow_arrays(int) override;
@@ -70,14 +56,22 @@ class FixGRFLOWWall : public Fix, public GRFLOW::FlatWalls {
   int size_restart(int) override;
   int maxsize_restart() override;
 
+  // the walls, for the fixes that drive them (fix grflow/shear, fix
+  // grflow/compress): GRFLOW::FlatWalls, grflow_wall.h
+  GRFLOW::FlatWalls &cell() { return *walls; }
+
   // the fix grflow/wall with ID id that has both walls, for another
   // command (caller, e.g. "Fix grflow/shear"); an error otherwise
-  static FixGRFLOWWall *find_cell(class LAMMPS *lmp, const std::string &caller, const char *id);
+  static FixGRFLOWWall *find_cell(class LAMMPS *lmp, const std::string &caller,
+                                  const std::string &id);
+
+ protected:
+  GRFLOW::FlatWalls *walls;      // the walls, their contacts and histories
+  GRFLOW::WallNearList *near;    // atoms that may touch a wall
 
  private:
-  [[noreturn]] void crossed(int, int);
+  void crossed(int, int);
   void check_box();
-  GRFLOW::WallSpheres spheres() const;
 };
 
 }    // namespace LAMMPS_NS

@@ -15,7 +15,7 @@
 
 #include "grflow_coeffs.h"
 
-#include "grflow_restart.h"
+#include "grflow_host_api.h"
 
 #include "error.h"
 #include "lammps.h"

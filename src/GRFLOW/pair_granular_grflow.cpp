@@ -26,7 +26,7 @@
 
 #include "grflow_coeffs.h"
 #include "grflow_contact.h"
-#include "grflow_restart.h"
+#include "grflow_host_api.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -73,7 +73,8 @@ PairGranularGRFLOW::PairGranularGRFLOW(LAMMPS *lmp) : Pair(lmp)
   dt = update->dt;
   full_arm = 0;
   normal_law = NORMAL_CLIPPED;
-  for (auto &p : param) p = nullptr;
+  param = new double **[NCOEFF];
+  for (int k = 0; k < NCOEFF; k++) param[k] = nullptr;
   packed = nullptr;
   onerad_dynamic = maxrad_dynamic = nullptr;
   neighprev = 0;
@@ -105,11 +106,12 @@ PairGranularGRFLOW::~PairGranularGRFLOW()
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
-    for (auto &p : param) memory->destroy(p);
+    for (int k = 0; k < NCOEFF; k++) memory->destroy(param[k]);
     memory->destroy(packed);
     delete[] onerad_dynamic;
     delete[] maxrad_dynamic;
   }
+  delete[] param;
 }
 
 /* ---------------------------------------------------------------------- */

@@ -20,11 +20,29 @@ PairStyle(granular/grflow,PairGranularGRFLOW);
 #ifndef LMP_PAIR_GRANULAR_GRFLOW_H
 #define LMP_PAIR_GRANULAR_GRFLOW_H
 
-#include "grflow_coeffs.h"
-#include "grflow_lammps_api.h"
 #include "pair.h"
 
+// Pair::atom2cut() and Pair::radii2cut(): virtual in LAMMPS 4Feb2025 (the
+// per-atom cutoffs of finite-size particles for "neighbor multi"), gone in
+// 4Jul2026.  GRFLOW's builds set GRFLOW_PAIR_HAS_ATOM2CUT from the tree's
+// pair.h (cmake/GRFLOWCompileSettings.cmake); otherwise it is inferred from
+// a header that 4Jul2026 has and 4Feb2025 does not (nbin_manual.h).
+#ifndef GRFLOW_PAIR_HAS_ATOM2CUT
+#if defined(__has_include)
+#if __has_include("nbin_manual.h")
+#define GRFLOW_PAIR_HAS_ATOM2CUT 0
+#else
+#define GRFLOW_PAIR_HAS_ATOM2CUT 1
+#endif
+#else
+#define GRFLOW_PAIR_HAS_ATOM2CUT 1
+#endif
+#endif
+
 namespace LAMMPS_NS {
+namespace GRFLOW {
+  struct ContactCoeffs;
+}    // namespace GRFLOW
 
 class PairGranularGRFLOW : public Pair {
  public:
@@ -57,9 +75,10 @@ class PairGranularGRFLOW : public Pair {
   int full_arm;      // 1: contact-point velocity with full radii (stock compatible)
   int normal_law;    // GRFLOW::NORMAL_CLIPPED or NORMAL_UNCLIPPED (keyword normal_force)
 
-  // user-facing per type pair coefficients, one array per name in COEFF_NAMES,
-  // (changed by pair_coeff or fix adapt) and their packed copy for the kernel
-  double **param[GRFLOW::NCOEFF];
+  // user-facing per type pair coefficients, one array per name in
+  // GRFLOW::COEFF_NAMES (NCOEFF of them, grflow_contact_coeffs.h), changed
+  // by pair_coeff or fix adapt, and their packed copy for the kernel
+  double ***param;
   GRFLOW::ContactCoeffs **packed;
 
   double *onerad_dynamic, *maxrad_dynamic;

@@ -141,7 +141,7 @@ namespace GRFLOW {
     const char *rule = nullptr;
     const int k = bad_coeff(value, &rule);
     if (k < NCOEFF)
-      host.fail(where + ": " + COEFF_NAMES[k] + " " + rule + ", got " + host.text(value[k]));
+      host.fail(FLERR, where + ": " + COEFF_NAMES[k] + " " + rule + ", got " + host.text(value[k]));
   }
 
   template <class Host>
@@ -149,11 +149,11 @@ namespace GRFLOW {
                                     bool stop_at_unknown, double *value, Host &host)
   {
     if (first + 2 > narg) {
-      host.fail("Incorrect args for " + cmd + ": expected kn cn [keyword value ...]");
+      host.fail(FLERR, "Incorrect args for " + cmd + ": expected kn cn [keyword value ...]");
       return narg;
     }
-    const double kn = host.number(arg[first], cmd + " kn");
-    const double cn = host.number(arg[first + 1], cmd + " cn");
+    const double kn = host.number(FLERR, arg[first], cmd + " kn");
+    const double cn = host.number(FLERR, arg[first + 1], cmd + " cn");
     default_coeffs(kn, cn, value);
 
     int iarg = first + 2;
@@ -163,21 +163,21 @@ namespace GRFLOW {
       const bool off = (kw == "rolling" || kw == "torsion");
       if ((k == NCOEFF || k < KT) && !off) {
         if (stop_at_unknown) break;
-        host.fail("Unknown " + cmd + " keyword: " + kw);
+        host.fail(FLERR, "Unknown " + cmd + " keyword: " + kw);
         return narg;
       }
       if (iarg + 2 > narg) {
-        host.fail("Missing value for " + cmd + " keyword " + kw);
+        host.fail(FLERR, "Missing value for " + cmd + " keyword " + kw);
         return narg;
       }
       if (off) {
         if (strcmp(arg[iarg + 1], "off") != 0) {
-          host.fail(cmd + " " + kw + " takes only the value off, not " + arg[iarg + 1]);
+          host.fail(FLERR, cmd + " " + kw + " takes only the value off, not " + arg[iarg + 1]);
           return narg;
         }
         mode_off((kw == "rolling") ? KR : KO, value);
       } else {
-        value[k] = host.number(arg[iarg + 1], cmd + " " + kw);
+        value[k] = host.number(FLERR, arg[iarg + 1], cmd + " " + kw);
       }
       iarg += 2;
     }
@@ -193,7 +193,8 @@ namespace GRFLOW {
   {
     if (strcmp(value, "reduced") == 0) return 0;
     if (strcmp(value, "full") == 0) return 1;
-    host.fail("Unknown " + cmd + " velocity_arm value " + value + ": expected reduced or full");
+    host.fail(FLERR,
+              "Unknown " + cmd + " velocity_arm value " + value + ": expected reduced or full");
     return 0;
   }
 
@@ -210,8 +211,9 @@ namespace GRFLOW {
   {
     if (strcmp(value, "clipped") == 0) return NORMAL_CLIPPED;
     if (strcmp(value, "unclipped") == 0) return NORMAL_UNCLIPPED;
-    host.fail("Unknown " + cmd + " normal_force value " + value +
-              ": expected clipped or unclipped");
+    host.fail(FLERR,
+              "Unknown " + cmd + " normal_force value " + value +
+                  ": expected clipped or unclipped");
     return NORMAL_CLIPPED;
   }
 

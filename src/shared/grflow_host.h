@@ -15,15 +15,18 @@
    What the host-free rules of GRFLOW (src/shared) need from a host
    (LAMMPS, LIGGGHTS), and the pieces of them that every command uses.
 
-   The rules parse numbers and report errors through a Host object, each
-   host's GRFLOW::FixHost (its grflow_restart.h) or a struct like it:
-     double number(const char *text, const std::string &what)
+   The rules parse numbers and report errors through a Host object
+   (GRFLOW::FixHost of grflow_host_api.h, one definition per host, or a
+   struct like it).  Every call takes the file and line of its call site
+   (FLERR), so that an error names the line of the rule that raised it:
+     double number(FLERR, const char *text, const std::string &what)
        the value of a numeric argument (what names it, e.g. "fix
        grflow/wall zlo"); reports an error itself if text is no number
-     void missing(const std::string &cmd)    missing arguments (no return)
-     void fail(const std::string &message)   any other error (no return)
-     std::string text(double value)          a number as the host's
-                                             messages print it
+     int integer(FLERR, text, what), bool logical(FLERR, text, what)
+     void missing(FLERR, const std::string &cmd)   missing arguments
+     void fail(FLERR, const std::string &message)  any other error
+     void warning(FLERR, const std::string &message)
+     std::string text(double value)  a number as the host's messages print it
    The code does not rely on missing() and fail() not returning: it stops
    its work after calling them.
 ------------------------------------------------------------------------- */
@@ -38,6 +41,14 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+// the call site of a Host call, as LAMMPS's and LIGGGHTS's FLERR give it
+// (token for token as LAMMPS's pointers.h has it, so that either may come first)
+// clang-format off
+#ifndef FLERR
+#define FLERR __FILE__,__LINE__
+#endif
+// clang-format on
 
 namespace LAMMPS_NS {
 namespace GRFLOW {
@@ -83,12 +94,12 @@ namespace GRFLOW {
       for (const Keyword &k : known)
         if (kw == k.name) found = &k;
       if (!found) {
-        host.fail("Unknown " + command + " keyword: " + kw);
+        host.fail(FLERR, "Unknown " + command + " keyword: " + kw);
         return;
       }
       const std::string what = command + " " + kw;
       if (iarg + 1 + found->nvalues > narg) {
-        host.missing(what);
+        host.missing(FLERR, what);
         return;
       }
       apply(kw, arg + iarg + 1, what);
@@ -97,21 +108,10 @@ namespace GRFLOW {
   }
 
   /* ----------------------------------------------------------------------
-     the gap between the two walls of a fix grflow/wall (GRFLOW::FlatWalls,
-     grflow_wall.h): the height of the cell, for the fixes that drive the
-     walls (fix grflow/shear: gamma; fix grflow/compress: the wall speed
-     and the cell volume)
-  ------------------------------------------------------------------------- */
-
-  template <class Walls> static inline double wall_gap(const Walls &walls)
-  {
-    return walls.wall(Walls::HI).z - walls.wall(Walls::LO).z;
-  }
-
-  /* ----------------------------------------------------------------------
      global restart data of a GRFLOW fix: a tag that marks GRFLOW data, the
-     fix's format version, the number of values, then the values (each
-     host's grflow_restart.h writes and reads them on its processors).
+     fix's format version, the number of values, then the values
+     (write_restart_values() and read_restart_values() of
+     grflow_host_api.h write and read them on the host's processors).
      Data of format 0 (written before the header existed) are the values
      alone.
   ------------------------------------------------------------------------- */
@@ -149,23 +149,26 @@ namespace GRFLOW {
     }
     const double v = list[1], n = list[2];
     if (!(v >= 1.0 && v == std::floor(v)) || v > current) {
-      host.fail(who + ": restart data of format version " + host.text(v) +
-                "; this GRFLOW reads versions up to " + std::to_string(current) +
-                " (a newer GRFLOW wrote it, or the file is damaged)");
+      host.fail(FLERR,
+                who + ": restart data of format version " + host.text(v) +
+                    "; this GRFLOW reads versions up to " + std::to_string(current) +
+                    " (a newer GRFLOW wrote it, or the file is damaged)");
       version = current;
       return list + 3;
     }
     version = (int) v;
     if (version == current) {
       if (n != count)
-        host.fail(who + ": restart data of format version " + std::to_string(version) + " hold " +
-                  host.text(n) + " values, expected " + std::to_string(count) +
-                  ": the file is damaged");
+        host.fail(FLERR,
+                  who + ": restart data of format version " + std::to_string(version) + " hold " +
+                      host.text(n) + " values, expected " + std::to_string(count) +
+                      ": the file is damaged");
       for (int k = 0; k < count; k++)
         if (!std::isfinite(list[3 + k]))
-          host.fail(who + ": restart value " + std::to_string(k + 1) + " of " +
-                    std::to_string(count) + " is " + host.text(list[3 + k]) +
-                    ": the file is damaged");
+          host.fail(FLERR,
+                    who + ": restart value " + std::to_string(k + 1) + " of " +
+                        std::to_string(count) + " is " + host.text(list[3 + k]) +
+                        ": the file is damaged");
     }
     return list + 3;
   }

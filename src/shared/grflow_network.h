@@ -27,7 +27,7 @@
 
 #include "grflow_contact.h"
 #include "grflow_host.h"
-#include "grflow_wall.h"
+#include "grflow_wall.h"    // WallContacts
 
 #include <mpi.h>
 
@@ -41,11 +41,19 @@
 namespace LAMMPS_NS {
 namespace GRFLOW {
 
+  // the pore pressure ratio r_u = 1 - p/p0 of mean stress p against the
+  // reference p0 (the compute's p0 keyword, fix grflow/shear's p0); 0
+  // while there is no p0 > 0
+  static inline double pore_pressure_ratio(double p, double p0)
+  {
+    return (p0 > 0.0) ? 1.0 - p / p0 : 0.0;
+  }
+
   /* ----------------------------------------------------------------------
      the keywords of compute grflow/network, host-free: region ID, slab f,
      zlimits zlo zhi, volume V, shear ab, p0 value|first, cmax c.  The
      host reads numbers and reports errors (grflow_host.h; also
-     host.integer(const char *, const std::string &what) -> int).  Region
+     host.integer(FLERR, const char *, const std::string &what) -> int).  Region
      IDs, variables (v_name) and volumes are checked by the host.
   ------------------------------------------------------------------------- */
 
@@ -56,7 +64,7 @@ namespace GRFLOW {
     std::string region;          // empty: the slab of zlimits (or of the box)
     std::string zlo, zhi;        // sample bounds in z: number or v_name; empty: the box
     std::string volume;          // volume of a non-block region: number or v_name
-    bool p0_keyword = false;     // p0 given: no fix may own it (one owner)
+    bool p0_keyword = false;     // p0 given: r_u = 1 - p/p0 (else r_u = 0)
     bool p0first = false;        // p0 first: the first positive pressure
     bool p0flag = false;         // p0 is set
     double p0 = 0.0;
@@ -70,15 +78,16 @@ namespace GRFLOW {
                        keyword(kw, values, what, host);
                      });
       if (!region.empty() && !zlo.empty())
-        host.fail("Compute grflow/network: use either region or zlimits, not both");
+        host.fail(FLERR, "Compute grflow/network: use either region or zlimits, not both");
       if (region.empty() && !volume.empty())
-        host.fail("Compute grflow/network volume goes with region (the slab volume is known)");
+        host.fail(FLERR,
+                  "Compute grflow/network volume goes with region (the slab volume is known)");
       // numbers now, variables when they are used
       const std::string *values[] = {&zlo, &zhi, &volume};
       const char *const what[] = {"zlimits", "zlimits", "volume"};
       for (int k = 0; k < 3; k++)
         if (!values[k]->empty() && values[k]->compare(0, 2, "v_") != 0)
-          host.number(values[k]->c_str(), std::string("compute grflow/network ") + what[k]);
+          host.number(FLERR, values[k]->c_str(), std::string("compute grflow/network ") + what[k]);
     }
 
     // the values of one keyword of parse()
@@ -89,9 +98,10 @@ namespace GRFLOW {
       if (kw == "region") {
         region = value;
       } else if (kw == "slab") {
-        slab = host.number(value, what);
+        slab = host.number(FLERR, value, what);
         if (slab <= 0.0 || slab > 1.0)
-          host.fail("Compute grflow/network slab must be in (0,1], got " + format_number(slab));
+          host.fail(FLERR,
+                    "Compute grflow/network slab must be in (0,1], got " + format_number(slab));
       } else if (kw == "zlimits") {
         zlo = value;
         zhi = values[1];
@@ -102,9 +112,10 @@ namespace GRFLOW {
         const int a = c.size() == 2 ? c[0] - 'x' : -1;
         const int b = c.size() == 2 ? c[1] - 'x' : -1;
         if (a < 0 || a > 2 || b < 0 || b > 2 || a == b)
-          host.fail("Compute grflow/network shear must be two different axes (xy, xz, yz, "
+          host.fail(FLERR,
+                    "Compute grflow/network shear must be two different axes (xy, xz, yz, "
                     "...), got " +
-                    c);
+                        c);
         tau_a = a;
         tau_b = b;
       } else if (kw == "p0") {
@@ -113,35 +124,32 @@ namespace GRFLOW {
           p0first = true;
           p0flag = false;
         } else {
-          p0 = host.number(value, what);
+          p0 = host.number(FLERR, value, what);
           if (p0 <= 0.0)
-            host.fail("Compute grflow/network p0 must be > 0, got " + format_number(p0));
+            host.fail(FLERR, "Compute grflow/network p0 must be > 0, got " + format_number(p0));
           p0flag = true;
           p0first = false;
         }
       } else if (kw == "cmax") {
-        cmax = host.integer(value, what);
+        cmax = host.integer(FLERR, value, what);
         if (cmax < 1 || cmax > 100)
-          host.fail("Compute grflow/network cmax must be in 1..100, got " + std::to_string(cmax));
+          host.fail(FLERR,
+                    "Compute grflow/network cmax must be in 1..100, got " + std::to_string(cmax));
       }
     }
 
     // the output vector from this processor's sums: the sums over all
     // processors of world, then derive_network() (below), or with network
     // false derive_stress(), its first NSTRESS entries only; r_u with
-    // reference_p0(owner_p0); with p0 first, the first positive pressure
-    // becomes p0 (r_u = 1 - p/p0 needs p0 > 0)
+    // reference_p0(); with p0 first, the first positive pressure becomes
+    // p0 (r_u = 1 - p/p0 needs p0 > 0)
     void reduce_and_derive(MPI_Comm world, const std::vector<double> &local, double volume,
-                           double *vector, bool network, double owner_p0);
+                           double *vector, bool network);
 
     // p0 of r_u: that of the p0 keyword (its value, or the first positive
-    // pressure once there is one), else owner_p0, that of the fix
-    // grflow/shear that shears with the compute (the fix owns it: it takes
-    // it when shearing starts and keeps it in its restart data), 0 for none
-    double reference_p0(double owner_p0) const
-    {
-      return p0_keyword ? (p0flag ? p0 : 0.0) : owner_p0;
-    }
+    // pressure once there is one), 0 for none (r_u = 0).  fix grflow/shear
+    // has a p0 and an r_u of its own (ShearProtocol, grflow_shear_rule.h).
+    double reference_p0() const { return (p0_keyword && p0flag) ? p0 : 0.0; }
 
     // the bounds of the slab of the sample between zlo and zhi
     void slab_bounds(double zlo_value, double zhi_value, double &lo, double &hi) const
@@ -292,30 +300,30 @@ namespace GRFLOW {
     }
   };
 
-  // the contacts of owned particles inside with the flat walls of fix
-  // grflow/wall (the force-bearing ones the wall recorded on this step; n
-  // is the wall's normal), counted in ncontact[]; with ncontact null
-  // their stress only (the stress path)
-  template <class Walls>
-  static void add_wall_contacts(const Walls &walls, const double *inside, int nlocal,
-                                double *ncontact, double *sums)
+  // the contacts of owned particles inside with flat walls, as a fix
+  // with wall contacts recorded them on this step (WallContacts,
+  // grflow_wall.h: the force-bearing ones; n is the wall's normal),
+  // counted in ncontact[]; with ncontact null their stress only (the
+  // stress path)
+  static inline void add_wall_contacts(const WallContacts &walls, const double *inside, int nlocal,
+                                       double *ncontact, double *sums)
   {
-    for (auto *wall : walls)
-      for (int i = 0; i < nlocal; i++) {
-        if (inside[i] <= 0.0) continue;
-        for (int w = 0; w < FlatWalls::NWALL; w++) {
-          const double arm = wall->contact_arm(i, w);
-          if (arm <= 0.0) continue;
-          if (ncontact) {
-            ncontact[i] += 1.0;
-            NetworkSums::add_wall_contact(sums, wall->normal_sign(w), wall->contact_force(i, w),
-                                          arm);
-          } else {
-            NetworkSums::add_wall_stress(sums, wall->normal_sign(w), wall->contact_force(i, w),
-                                         arm);
-          }
+    typedef WallContacts C;
+    for (int i = 0; i < nlocal; i++) {
+      if (inside[i] <= 0.0) continue;
+      const double *record = walls.record[i];
+      for (int w = 0; w < walls.nwall; w++) {
+        const double arm = record[C::REC_SIZE * w + C::REC_ARM];
+        if (arm <= 0.0) continue;
+        const double *force = &record[C::REC_SIZE * w + C::REC_FORCE];
+        if (ncontact) {
+          ncontact[i] += 1.0;
+          NetworkSums::add_wall_contact(sums, walls.normal[w], force, arm);
+        } else {
+          NetworkSums::add_wall_stress(sums, walls.normal[w], force, arm);
         }
       }
+    }
   }
 
   // every owned particle inside, with its ncontact[] contacts
@@ -372,7 +380,7 @@ namespace GRFLOW {
     vector[L::TAU] = -0.5 * (s[tau_a][tau_b] + s[tau_b][tau_a]);
     vector[L::QDEV] = sqrt(1.5 * ss);
     vector[L::SNORM] = sqrt(ss);
-    vector[L::RU] = (p0 > 0.0) ? 1.0 - p / p0 : 0.0;
+    vector[L::RU] = pore_pressure_ratio(p, p0);
   }
 
   static inline void derive_network(const double *total, double volume, int tau_a, int tau_b,
@@ -427,12 +435,11 @@ namespace GRFLOW {
   // add up the whole array (the stress path's has zeros beyond the
   // stress), so that the stress sums are added in the same order.
   inline void NetworkOptions::reduce_and_derive(MPI_Comm world, const std::vector<double> &local,
-                                                double volume, double *vector, bool network,
-                                                double owner_p0)
+                                                double volume, double *vector, bool network)
   {
     std::vector<double> total(local.size());
     MPI_Allreduce(local.data(), total.data(), (int) local.size(), MPI_DOUBLE, MPI_SUM, world);
-    const double p0_ru = reference_p0(owner_p0);
+    const double p0_ru = reference_p0();
     if (network)
       derive_network(total.data(), volume, tau_a, tau_b, cmax, p0_ru, vector);
     else
@@ -440,7 +447,7 @@ namespace GRFLOW {
     if (p0first && !p0flag && vector[NetworkLayout::PRESS] > 0.0) {
       p0 = vector[NetworkLayout::PRESS];
       p0flag = true;
-      vector[NetworkLayout::RU] = 1.0 - vector[NetworkLayout::PRESS] / p0;
+      vector[NetworkLayout::RU] = pore_pressure_ratio(vector[NetworkLayout::PRESS], p0);
     }
   }
 

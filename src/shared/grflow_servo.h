@@ -17,12 +17,11 @@
    the gain, the overshoot damping of grflow_overshoot.h and rate_max),
    the box scaling and wall speeds it asks for, the kinetic energy and
    solid volume sums, the convergence test (stress error and energy
-   ratio), the output vector and the restart block's values.  The hosts
-   (src/GRFLOW, src/LIGGGHTS: class FixGRFLOWCompress) read the stresses
-   from their compute grflow/network and the energies, move the walls of
-   their fix grflow/wall and the periodic box, and add over ranks; they
-   read numbers and report through a host object as in
-   grflow_shear_rule.h.  Header only, no host types.
+   ratio), the output vector and the restart block's values.  The fix
+   (src/GRFLOW/fix_grflow_compress.cpp, compiled into both hosts) reads
+   the stresses from its compute grflow/network and the energies, moves
+   the walls of its fix grflow/wall and the periodic box, and adds over
+   ranks; numbers and errors go through a host object (grflow_host.h).  Header only, no host types.
    Doc: doc/fix_grflow_compress.rst.
 ------------------------------------------------------------------------- */
 
@@ -66,18 +65,19 @@ namespace GRFLOW {
     template <class Host> void parse(int narg, char **arg, Host &host)
     {
       if (narg < 7) {
-        host.fail("Illegal fix grflow/compress command: expected wall-ID compute-ID p_target "
+        host.fail(FLERR,
+                  "Illegal fix grflow/compress command: expected wall-ID compute-ID p_target "
                   "rate_max [keyword value ...]");
         return;
       }
       wall_id = arg[3];
       network_id = arg[4];
-      p_target = host.number(arg[5], "fix grflow/compress p_target");
-      rate_max = host.number(arg[6], "fix grflow/compress rate_max");
+      p_target = host.number(FLERR, arg[5], "fix grflow/compress p_target");
+      rate_max = host.number(FLERR, arg[6], "fix grflow/compress rate_max");
       if (p_target <= 0.0)
-        host.fail("Fix grflow/compress p_target must be > 0, got " + host.text(p_target));
+        host.fail(FLERR, "Fix grflow/compress p_target must be > 0, got " + host.text(p_target));
       if (rate_max <= 0.0)
-        host.fail("Fix grflow/compress rate_max must be > 0, got " + host.text(rate_max));
+        host.fail(FLERR, "Fix grflow/compress rate_max must be > 0, got " + host.text(rate_max));
 
       static const Keyword known[] = {
           {"elastic", 1}, {"gain", 1}, {"tol", 1}, {"ke_ratio", 1}, {"every", 1}};
@@ -93,17 +93,20 @@ namespace GRFLOW {
     {
       if (kw == "elastic") {
         if (std::string(value).compare(0, 2, "v_") != 0)
-          host.fail("Fix grflow/compress elastic takes an equal-style variable v_name, got " +
-                    std::string(value));
+          host.fail(FLERR,
+                    "Fix grflow/compress elastic takes an equal-style variable v_name, got " +
+                        std::string(value));
         elastic_var = value + 2;
       } else if (kw == "every") {
-        servo_every = host.integer(value, what);
+        servo_every = host.integer(FLERR, value, what);
         if (servo_every < 1)
-          host.fail("Fix grflow/compress every must be >= 1, got " + std::to_string(servo_every));
+          host.fail(FLERR,
+                    "Fix grflow/compress every must be >= 1, got " + std::to_string(servo_every));
       } else if (kw == "gain" || kw == "tol" || kw == "ke_ratio") {
         double &v = (kw == "gain") ? gain : (kw == "tol" ? tol : ke_ratio_max);
-        v = host.number(value, what);
-        if (v <= 0.0) host.fail("Fix grflow/compress " + kw + " must be > 0, got " + host.text(v));
+        v = host.number(FLERR, value, what);
+        if (v <= 0.0)
+          host.fail(FLERR, "Fix grflow/compress " + kw + " must be > 0, got " + host.text(v));
       }
     }
 
@@ -113,25 +116,27 @@ namespace GRFLOW {
     static void check_cell(bool sphere, bool triclinic, bool periodic_xy, int dimension, Host &host)
     {
       if (!sphere)
-        host.fail("Fix grflow/compress requires atom attributes radius, rmass and omega "
+        host.fail(FLERR,
+                  "Fix grflow/compress requires atom attributes radius, rmass and omega "
                   "(atom_style sphere)");
-      if (triclinic) host.fail("Fix grflow/compress requires an orthogonal box");
-      if (!periodic_xy) host.fail("Fix grflow/compress requires a box periodic in x and y");
-      if (dimension != 3) host.fail("Fix grflow/compress requires a 3d system");
+      if (triclinic) host.fail(FLERR, "Fix grflow/compress requires an orthogonal box");
+      if (!periodic_xy) host.fail(FLERR, "Fix grflow/compress requires a box periodic in x and y");
+      if (dimension != 3) host.fail(FLERR, "Fix grflow/compress requires a 3d system");
     }
 
     // the internal compute pe of the fix (found or deleted by the user)
     template <class Host> static void check_pe(bool found, const std::string &id_pe, Host &host)
     {
-      if (!found) host.fail("Fix grflow/compress: its compute " + id_pe + " was deleted");
+      if (!found) host.fail(FLERR, "Fix grflow/compress: its compute " + id_pe + " was deleted");
     }
 
     // the elastic-energy variable, found (exists) and equal-style or not
     template <class Host> void check_variable(bool exists, bool equal_style, Host &host) const
     {
-      if (!exists) host.fail("Fix grflow/compress: variable " + elastic_var + " does not exist");
+      if (!exists)
+        host.fail(FLERR, "Fix grflow/compress: variable " + elastic_var + " does not exist");
       if (!equal_style)
-        host.fail("Fix grflow/compress: variable " + elastic_var + " is not equal-style");
+        host.fail(FLERR, "Fix grflow/compress: variable " + elastic_var + " is not equal-style");
     }
 
     // the servo updates on multiples of every
@@ -192,11 +197,13 @@ namespace GRFLOW {
       for (int a = 0; a < 3; a++) {
         const double err = (sigma[a] - s.p_target) / s.p_target;
         if (damping[a].update(err, s.tol))
-          host.warning(
-              "Fix " + std::string(id) + " grflow/compress: sigma_" + std::string(2, "xyz"[a]) +
-              " overshot the target " + std::to_string(OvershootDamping::NOVERSHOOT) +
-              " servo updates in a row at step " + std::to_string(static_cast<long long>(step)) +
-              "; its gain factor is halved to " + host.text(damping[a].factor));
+          host.warning(FLERR,
+                       "Fix " + std::string(id) + " grflow/compress: sigma_" +
+                           std::string(2, "xyz"[a]) + " overshot the target " +
+                           std::to_string(OvershootDamping::NOVERSHOOT) +
+                           " servo updates in a row at step " +
+                           std::to_string(static_cast<long long>(step)) +
+                           "; its gain factor is halved to " + host.text(damping[a].factor));
         const double x = damping[a].factor * s.gain * err;
         const double upper = (1.0 < x) ? 1.0 : x;
         rate[a] = s.rate_max * ((-1.0 > upper) ? -1.0 : upper);

@@ -18,18 +18,19 @@
    count N (grflow_cycle_count.h), initial liquefaction (the first check
    with r_u >= R), the stop conditions, the glued layer's motion, the
    output vector, the progress line and the restart block's values.  The
-   hosts (src/GRFLOW, src/LIGGGHTS: class FixGRFLOWShear) read tau, p and
-   r_u from their compute grflow/network and drive the top wall of their
-   fix grflow/wall.  Header only, no host types.
+   fix (src/GRFLOW/fix_grflow_shear.cpp, compiled into both hosts) reads
+   tau and p from its compute grflow/network, derives r_u = 1 - p/p0 with
+   its own p0, and drives the top wall of its fix grflow/wall.  Header
+   only, no host types.
    Doc: doc/fix_grflow_shear.rst.
 
-   The host reads numbers and reports (the GRFLOW::FixHost of each host's
-   grflow_restart.h):
-     host.number(const char *str, const std::string &what) -> double
-     host.integer(str, what) -> int, host.logical(str, what) -> bool
-     host.missing(const std::string &cmd)     (no return)
-     host.fail(const std::string &message)    (no return)
-     host.warning(const std::string &message)
+   The host reads numbers and reports (GRFLOW::FixHost, grflow_host_api.h;
+   FLERR: the call site):
+     host.number(FLERR, const char *str, const std::string &what) -> double
+     host.integer(FLERR, str, what) -> int, host.logical(FLERR, str, what) -> bool
+     host.missing(FLERR, const std::string &cmd)     (no return)
+     host.fail(FLERR, const std::string &message)    (no return)
+     host.warning(FLERR, const std::string &message)
      host.text(double) -> std::string          (a number in a message)
 ------------------------------------------------------------------------- */
 
@@ -75,17 +76,18 @@ namespace GRFLOW {
     template <class Host> void parse(int narg, char **arg, Host &host)
     {
       if (narg < 7) {
-        host.fail("Illegal fix grflow/shear command: expected wall-ID compute-ID vx tau_amp "
+        host.fail(FLERR,
+                  "Illegal fix grflow/shear command: expected wall-ID compute-ID vx tau_amp "
                   "[keyword value ...]");
         return;
       }
       wall_id = arg[3];
       network_id = arg[4];
-      vx = host.number(arg[5], "fix grflow/shear vx");
-      tau_amp = host.number(arg[6], "fix grflow/shear tau_amp");
-      if (vx <= 0.0) host.fail("Fix grflow/shear vx must be > 0, got " + host.text(vx));
+      vx = host.number(FLERR, arg[5], "fix grflow/shear vx");
+      tau_amp = host.number(FLERR, arg[6], "fix grflow/shear tau_amp");
+      if (vx <= 0.0) host.fail(FLERR, "Fix grflow/shear vx must be > 0, got " + host.text(vx));
       if (tau_amp <= 0.0)
-        host.fail("Fix grflow/shear tau_amp must be > 0, got " + host.text(tau_amp));
+        host.fail(FLERR, "Fix grflow/shear tau_amp must be > 0, got " + host.text(tau_amp));
 
       static const Keyword known[] = {{"every", 1},       {"liquefaction", 1},
                                       {"stop_cycles", 1}, {"stop_after_liquefaction", 1},
@@ -102,23 +104,24 @@ namespace GRFLOW {
     void keyword(const std::string &kw, const char *value, const std::string &what, Host &host)
     {
       if (kw == "every") {
-        check_every = host.integer(value, what);
-        if (check_every < 1) host.fail("Fix grflow/shear every must be >= 1");
+        check_every = host.integer(FLERR, value, what);
+        if (check_every < 1) host.fail(FLERR, "Fix grflow/shear every must be >= 1");
       } else if (kw == "liquefaction") {
-        ru_liq = host.number(value, what);
+        ru_liq = host.number(FLERR, value, what);
         if (ru_liq <= 0.0 || ru_liq > 1.0)
-          host.fail("Fix grflow/shear liquefaction threshold must be in (0,1], got " +
-                    host.text(ru_liq));
+          host.fail(FLERR,
+                    "Fix grflow/shear liquefaction threshold must be in (0,1], got " +
+                        host.text(ru_liq));
       } else if (kw == "progress") {
-        progress = host.logical(value, what);
+        progress = host.logical(FLERR, value, what);
       } else if (kw == "glue") {
         glue = value;
       } else if (kw == "stop_cycles" || kw == "stop_gamma" || kw == "stop_after_liquefaction") {
         double &stop = (kw == "stop_cycles") ? stop_cycles
             : (kw == "stop_gamma")           ? stop_gamma
                                              : stop_cycles_after_il;
-        stop = host.number(value, what);
-        if (stop <= 0.0) host.fail("Fix grflow/shear " + kw + " must be > 0");
+        stop = host.number(FLERR, value, what);
+        if (stop <= 0.0) host.fail(FLERR, "Fix grflow/shear " + kw + " must be > 0");
       }
     }
 
@@ -134,17 +137,6 @@ namespace GRFLOW {
     std::string glue_deleted() const
     {
       return "Fix grflow/shear glue group " + glue + " was deleted";
-    }
-    std::string p0_owner(const char *id) const
-    {
-      return "Fix grflow/shear " + std::string(id) + " sets p0 of compute " + network_id +
-          " when shearing starts: remove the compute's p0 keyword";
-    }
-    std::string p0_second_owner(const char *id, const char *other) const
-    {
-      return "Fix grflow/shear " + std::string(id) + ": fix grflow/shear " + other +
-          " shears with compute " + network_id +
-          " too, and each sets p0 of its r_u: give each fix a compute of its own";
     }
   };
 
@@ -173,8 +165,9 @@ namespace GRFLOW {
     {
       p0 = p;
       if (p0 <= 0.0)
-        host.fail("Fix grflow/shear: the mean stress is " + host.text(p0) +
-                  " when shearing starts; it must be > 0 to define r_u");
+        host.fail(FLERR,
+                  "Fix grflow/shear: the mean stress is " + host.text(p0) +
+                      " when shearing starts; it must be > 0 to define r_u");
       started = 1;
       direction = 1;
       count.start(t);
@@ -301,11 +294,12 @@ namespace GRFLOW {
     template <class Host> void unpack(const char *id, int version, const double *list, Host &host)
     {
       if (version < RESTART_VERSION) {
-        host.fail("Fix grflow/shear " + std::string(id) + ": restart data of format version " +
-                  std::to_string(version) +
-                  " were written before GRFLOW counted fractional cycles and lack the times of "
-                  "the cycle events: continue that run with the GRFLOW that wrote it, or start "
-                  "its shear stage again");
+        host.fail(FLERR,
+                  "Fix grflow/shear " + std::string(id) + ": restart data of format version " +
+                      std::to_string(version) +
+                      " were written before GRFLOW counted fractional cycles and lack the times of "
+                      "the cycle events: continue that run with the GRFLOW that wrote it, or start "
+                      "its shear stage again");
         return;
       }
       started = static_cast<int>(list[R_STARTED]);

@@ -428,10 +428,6 @@ def test_bad_arguments(tmp_path, line, message):
     # the mean stress at the start defines r_u: one sphere, no contact
     (["compute net all grflow/network", SHEAR, "run 0"],
      "Fix grflow/shear: the mean stress is 0 when shearing starts; it must be > 0 to define r_u"),
-    # p0 has one owner
-    (["compute net all grflow/network p0 1e5", SHEAR, "run 0"],
-     "Fix grflow/shear sh sets p0 of compute net when shearing starts: remove the compute's "
-     "p0 keyword"),
     (["compute net all grflow/network", "group top id 1", SHEAR + " glue top",
       "group top delete", "run 0"], "Fix grflow/shear glue group top was deleted"),
     (["compute net all grflow/network", COMPRESS + " elastic v_nothere", "run 0"],
