@@ -9,7 +9,7 @@
 #   scalar reference bit for bit only without fused multiply-adds (GCC
 #   fuses a*b+c by default when the target has FMA, e.g. -march=native;
 #   the default x86-64 target has none; tests: kernel_fma.*).
-# - GRFLOW_PAIR_HAS_ATOM2CUT (src/GRFLOW/grflow_lammps_api.h): 1 if the
+# - GRFLOW_PAIR_HAS_ATOM2CUT (src/GRFLOW/pair_granular_grflow.h): 1 if the
 #   tree's Pair still has the virtual atom2cut() (4Feb2025), 0 if not
 #   (4Jul2026).
 

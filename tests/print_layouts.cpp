@@ -23,6 +23,7 @@
    layouts (compute_grflow_network.cpp, ...).
 ------------------------------------------------------------------------- */
 
+#include "grflow_contact.h"
 #include "grflow_network.h"
 #include "grflow_servo.h"
 #include "grflow_shear_rule.h"
@@ -105,6 +106,25 @@ int main()
   ENTRY("compress", Comp, FACTOR_Y);
   ENTRY("compress", Comp, FACTOR_Z);
   ENTRY("compress", Comp, NOUT);
+
+  // the extra values of pair granular/grflow's single() (compute pair/local p1 ...)
+  using Single = GRFLOW::SingleLayout;
+  ENTRY("single", Single, FS_X);
+  ENTRY("single", Single, FS_Y);
+  ENTRY("single", Single, FS_Z);
+  ENTRY("single", Single, FS_LEN);
+  ENTRY("single", Single, FR_X);
+  ENTRY("single", Single, FR_Y);
+  ENTRY("single", Single, FR_Z);
+  ENTRY("single", Single, FR_LEN);
+  ENTRY("single", Single, TWIST);
+  ENTRY("single", Single, DX);
+  ENTRY("single", Single, DY);
+  ENTRY("single", Single, DZ);
+  ENTRY("single", Single, FO);
+  ENTRY("single", Single, FO_LEN);
+  ENTRY("single", Single, FN);
+  ENTRY("single", Single, NVALUES);
 
   using Wall = GRFLOW::FlatWalls;
   ENTRY("wall", Wall, LO_FX);

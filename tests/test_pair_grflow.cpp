@@ -434,7 +434,11 @@ TEST_F(Packings, SingleReproducesForcesAndTorques)
   read(lmp, poly);
   lmp.cmds({"pair_style granular/grflow", "pair_coeff * * 1.0e6 1.15"});
   drive(lmp);
-  lmp.cmds({"run 1000", "compute pl all pair/local dist p1 p2 p3 p5 p6 p7 p9 p11",
+  // p1-p3 sliding force, p5-p7 rolling force, p9 twisting torque on i,
+  // p10-p12 branch vector, p13 torsion force, p15 normal force
+  // (GRFLOW::SingleLayout)
+  lmp.cmds({"run 1000",
+            "compute pl all pair/local dist p1 p2 p3 p5 p6 p7 p9 p10 p11 p12 p13 p15",
             "compute ids all property/local patom1 patom2", "run 0"});
   const int n = lmp.natoms();
   const int nrows =
@@ -459,7 +463,7 @@ TEST_F(Packings, SingleReproducesForcesAndTorques)
   ASSERT_EQ(xy, 0.0);
   ASSERT_EQ(yz, 0.0);
   ASSERT_EQ(xz, 0.0);
-  double worst_r = 0.0;
+  double worst_r = 0.0, worst_twist = 0.0;
 
   std::vector<double> f(3 * n, 0.0), t(3 * n, 0.0);
   int contacts = 0, sliding = 0, rolling = 0, twisting = 0;
@@ -476,7 +480,10 @@ TEST_F(Packings, SingleReproducesForcesAndTorques)
     }
     const double r = q[0];
     worst_r = std::max(worst_r, std::fabs(std::sqrt(dot3(del, del)) - r) / r);
-    const double fn = q[8], ft[3] = {q[1], q[2], q[3]}, fr[3] = {q[4], q[5], q[6]}, fo = q[7];
+    // p10-p12: the branch vector x_i - x_j of the pair single() evaluated
+    for (int k = 0; k < 3; k++) worst_r = std::max(worst_r, std::fabs(q[8 + k] - del[k]) / r);
+    const double fn = q[12], ft[3] = {q[1], q[2], q[3]}, fr[3] = {q[4], q[5], q[6]},
+                 twist = q[7], fo = q[11];
     if (r >= rad[i] + rad[j]) continue;
     contacts++;
     sliding += ft[0] != 0.0;
@@ -484,20 +491,24 @@ TEST_F(Packings, SingleReproducesForcesAndTorques)
     twisting += fo != 0.0;
     const double n_[3] = {del[0] / r, del[1] / r, del[2] / r};
     const double delta = rad[i] + rad[j] - r, reff = rad[i] * rad[j] / (rad[i] + rad[j]);
+    // p9, the twisting torque on i along n, is a' f_o (p13)
+    worst_twist = std::max(worst_twist, std::fabs(twist - reff * fo));
     double nxft[3], nxfr[3];
     cross3(n_, ft, nxft);
     cross3(n_, fr, nxfr);
     for (int k = 0; k < 3; k++) {
       const double fk = fn * n_[k] + ft[k];
-      const double tc = reff * (nxfr[k] + fo * n_[k]);
+      const double tc = reff * nxfr[k] + twist * n_[k];
       f[3 * (i - 1) + k] += fk;
       f[3 * (j - 1) + k] -= fk;
       t[3 * (i - 1) + k] += -(rad[i] - 0.5 * delta) * nxft[k] + tc;
       t[3 * (j - 1) + k] += -(rad[j] - 0.5 * delta) * nxft[k] - tc;
     }
   }
-  // the same pairs as pair/local's: distances to round-off of the positions
-  EXPECT_LT(measured("|x_i - x_j| vs pair/local dist", worst_r), 1.0e-12);
+  // the same pairs as pair/local's: distances and branch vectors to
+  // round-off of the positions
+  EXPECT_LT(measured("|x_i - x_j| vs pair/local dist and p10-p12", worst_r), 1.0e-12);
+  EXPECT_LT(measured("p9 - a' p13 (N m)", worst_twist), 1.0e-20);
   EXPECT_GT(sliding, contacts / 2);
   EXPECT_GT(rolling, contacts / 2);
   EXPECT_GT(twisting, contacts / 2);
@@ -530,18 +541,24 @@ TEST_F(Packings, SingleSeesPairFromEitherSide)
       if (j >= nlocal) continue;
       const double del[3] = {x[i][0] - x[j][0], x[i][1] - x[j][1], x[i][2] - x[j][2]};
       const double rsq = dot3(del, del);
-      double fij, fji, a[11], b[11];
+      typedef SingleLayout S;
+      double fij, fji, a[S::NVALUES], b[S::NVALUES];
+      ASSERT_EQ(pair->single_extra, (int) S::NVALUES);
       pair->single(i, j, type[i], type[j], rsq, 1.0, 1.0, fij);
-      std::copy(pair->svector, pair->svector + 11, a);
+      std::copy(pair->svector, pair->svector + S::NVALUES, a);
       pair->single(j, i, type[j], type[i], rsq, 1.0, 1.0, fji);
-      std::copy(pair->svector, pair->svector + 11, b);
-      if (a[10] == 0.0) continue;
+      std::copy(pair->svector, pair->svector + S::NVALUES, b);
+      if (a[S::FN] == 0.0) continue;
       checked++;
-      const double scale = a[10];
-      for (int k = 0; k < 3; k++) worst = std::max(worst, std::fabs(a[k] + b[k]) / scale);
-      for (int k = 4; k < 11; k++) worst = std::max(worst, std::fabs(a[k] - b[k]) / scale);
+      // seen from j: the sliding force (on the other atom) and the branch
+      // vector flip; rolling, twisting, torsion and f_n do not
+      for (int k = 0; k < S::NVALUES; k++) {
+        const bool flips = (k >= S::FS_X && k <= S::FS_Z) || (k >= S::DX && k <= S::DZ);
+        const double scale = (k >= S::DX && k <= S::DZ) ? std::sqrt(rsq) : a[S::FN];
+        worst = std::max(worst, std::fabs(flips ? a[k] + b[k] : a[k] - b[k]) / scale);
+      }
       worst = std::max(worst, std::fabs(fij - fji) / std::fabs(fij));
-      EXPECT_NE(a[3], 0.0);    // springs really stored
+      EXPECT_NE(a[S::FS_LEN], 0.0);    // springs really stored
     }
   }
   EXPECT_GT(checked, 100);
@@ -587,6 +604,32 @@ void compare_with_stock(const std::string &data, bool torsion, double reff, bool
         (unclipped ? " unclipped" : "") + " vs stock after " + std::to_string(nsteps) + " ";
     for (const char *name : {"f", "torque", "omega", "x"})
       EXPECT_LT(measured(tag + name, max_rel_diff(a.gather3(name), b.gather3(name))), tol);
+
+    // compute pair/local p1-p12 mean the same in both styles (sliding force
+    // and its length, rolling force and its length, twisting torque,
+    // branch vector): per column, the largest difference against the
+    // column's largest value
+    std::string p1to12;
+    for (int k = 1; k <= 12; k++) p1to12 += " p" + std::to_string(k);
+    for (Lammps *l : {&a, &b})
+      l->cmds({"compute pl all pair/local" + p1to12 + " cutoff radius", "run 0 post no"});
+    const int rows = *(int *) lammps_extract_compute(a.handle, "pl", LMP_STYLE_LOCAL, LMP_SIZE_ROWS);
+    ASSERT_EQ(rows, *(int *) lammps_extract_compute(b.handle, "pl", LMP_STYLE_LOCAL, LMP_SIZE_ROWS));
+    ASSERT_GT(rows, 0);
+    auto pa = (double **) lammps_extract_compute(a.handle, "pl", LMP_STYLE_LOCAL, LMP_TYPE_ARRAY);
+    auto pb = (double **) lammps_extract_compute(b.handle, "pl", LMP_STYLE_LOCAL, LMP_TYPE_ARRAY);
+    for (int k = 0; k < 12; k++) {
+      double scale = 0.0, diff = 0.0;
+      for (int row = 0; row < rows; row++) {
+        scale = std::max(scale, std::fabs(pb[row][k]));
+        diff = std::max(diff, std::fabs(pa[row][k] - pb[row][k]));
+      }
+      if (scale == 0.0) {    // e.g. p9 without torsion: zero in both
+        EXPECT_EQ(diff, 0.0) << "p" << k + 1;
+        continue;
+      }
+      EXPECT_LT(measured(tag + "pair/local p" + std::to_string(k + 1), diff / scale), tol);
+    }
   }
 }
 

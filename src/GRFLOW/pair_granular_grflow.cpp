@@ -47,8 +47,6 @@
 using namespace LAMMPS_NS;
 using namespace GRFLOW;
 
-static constexpr int SVECTOR_SIZE = 11;
-
 // the settings in restart files: one int, bit 0 full_arm (velocity_arm
 // full), bit 1 the unclipped normal force.  Files written before the
 // normal_force keyword hold full_arm alone (0 or 1): the clipped law, as
@@ -67,8 +65,8 @@ PairGranularGRFLOW::PairGranularGRFLOW(LAMMPS *lmp) : Pair(lmp)
   writedata = 1;
 
   nondefault_history_transfer = 1;    // see transfer_history()
-  single_extra = SVECTOR_SIZE;
-  svector = new double[SVECTOR_SIZE];
+  single_extra = SingleLayout::NVALUES;
+  svector = new double[single_extra];
 
   dt = update->dt;
   full_arm = 0;
@@ -476,18 +474,22 @@ double PairGranularGRFLOW::single(int i, int j, int itype, int jtype, double rsq
   const ContactCoeffs &c = packed[itype][jtype];
   contact_forces(c, g, vrel, omega[i], omega[j], dt, false, history, out);
 
-  // same layout as stock pair granular: sliding force on i first, so that
-  // computes can read the tangential force from svector[0-2] for all styles
+  // the layout of stock pair granular first (GRFLOW::SingleLayout), so
+  // that commands reading p1-p12 of compute pair/local (and computes the
+  // sliding force from svector[0-2]) get the same quantities from either
+  typedef SingleLayout S;
   fforce = factor_lj * out.fn / r;
   for (int k = 0; k < 3; k++) {
-    svector[k] = factor_lj * out.ft[k];
-    svector[4 + k] = factor_lj * out.fr[k];
+    svector[S::FS_X + k] = factor_lj * out.ft[k];
+    svector[S::FR_X + k] = factor_lj * out.fr[k];
+    svector[S::DX + k] = del[k];
   }
-  svector[3] = factor_lj * sqrt(dot3(out.ft, out.ft));
-  svector[7] = factor_lj * sqrt(dot3(out.fr, out.fr));
-  svector[8] = factor_lj * out.fo;
-  svector[9] = factor_lj * fabs(out.fo);
-  svector[10] = factor_lj * out.fn;
+  svector[S::FS_LEN] = factor_lj * sqrt(dot3(out.ft, out.ft));
+  svector[S::FR_LEN] = factor_lj * sqrt(dot3(out.fr, out.fr));
+  svector[S::TWIST] = factor_lj * g.reff * out.fo;    // the torque on i is a' f_o n
+  svector[S::FO] = factor_lj * out.fo;
+  svector[S::FO_LEN] = factor_lj * fabs(out.fo);
+  svector[S::FN] = factor_lj * out.fn;
   return factor_lj * elastic_energy(c, g.delta, hist);
 }
 

@@ -74,6 +74,19 @@ namespace GRFLOW {
     double fo;             // torsion resistance force, along n
   };
 
+  // the extra values of a contact that pair granular/grflow's single()
+  // gives (compute pair/local p1, p2, ...: position + 1): first those of
+  // stock pair granular, with the same meaning (sliding force on i and its
+  // length, rolling resistance and its length, twisting torque on i along
+  // n, branch vector x_i - x_j), then GRFLOW's own (torsion force f_o, its
+  // magnitude, normal force f_n)
+  struct SingleLayout {
+    enum {
+      FS_X, FS_Y, FS_Z, FS_LEN, FR_X, FR_Y, FR_Z, FR_LEN, TWIST, DX, DY, DZ, FO, FO_LEN, FN,
+      NVALUES
+    };
+  };
+
   static GRFLOW_INLINE double dot3(const double *a, const double *b)
   {
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];

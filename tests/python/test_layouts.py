@@ -73,6 +73,17 @@ PC_NAME = re.compile(r"^net_P(\d+)$")
 # walls.lmp: the wall positions of fix walls
 WALLS = {"zlo": ("f_walls", "wall", "LO_Z"), "zhi": ("f_walls", "wall", "HI_Z")}
 
+# doc/pair_granular_grflow.rst, "Per-contact output": the bullet of each
+# entry of single()'s extra values (compute pair/local p1 ...), found by a
+# phrase of its text
+SINGLE_DOC = {
+    "FS_X": "components of the sliding force", "FS_LEN": "magnitude of the sliding force",
+    "FR_X": "components of the rolling resistance",
+    "FR_LEN": "magnitude of the rolling resistance", "TWIST": "twisting torque",
+    "DX": "branch vector", "FO": "signed torsion force",
+    "FO_LEN": "magnitude of the torsion force", "FN": "the normal force",
+}
+
 # the series' columns: what the print line of shear.lmp writes for each
 SERIES_VALUES = {
     "step": "step", "time": "time", "reversals": "v_shear_reversals",
@@ -263,6 +274,25 @@ def check_columns(title, series_columns, pc_columns, protocol_columns, readme_co
     return problems
 
 
+def check_single_doc(text, lay):
+    """the pair style's doc page against GRFLOW::SingleLayout: its count of
+    extra values and the p number of each bullet"""
+    problems = []
+    section = text.split("**Per-contact output.**", 1)[-1].split("----------", 1)[0]
+    n = lay["single"]["NVALUES"]
+    m = re.search(r"and (\d+)\s+extra values, accessible as \*p1\* to \*p(\d+)\*", section)
+    if not m or int(m.group(1)) != n or int(m.group(2)) != n:
+        problems.append(f"pair_granular_grflow.rst: the count of extra values is not {n}")
+    bullets = re.findall(r"^\* (p\d+(?:, p\d+)*) = (.*)$", section, re.M)
+    for entry, phrase in SINGLE_DOC.items():
+        first = [int(ps.split(",")[0][1:]) for ps, what in bullets if phrase in what]
+        want = lay["single"][entry] + 1
+        if first != [want]:
+            problems.append(f"pair_granular_grflow.rst: '{phrase}' is p{first}, the header "
+                            f"says p{want}")
+    return problems
+
+
 # ---------------------------------------------------------------- the places
 
 @pytest.fixture(scope="module")
@@ -276,6 +306,7 @@ def places():
         "series_columns": module and assigned_value(module, "SERIES_COLUMNS"),
         "pc_columns": module and assigned_value(module, "PC_COLUMNS"),
         "protocol_columns": assigned_value(os.path.join(HERE, "runfiles.py"), "COLUMNS"),
+        "pair_doc": read(os.path.join(ROOT, "doc", "pair_granular_grflow.rst")),
     }
 
 
@@ -284,7 +315,8 @@ def all_problems(p, lay):
     return (check_names(p["names"], lay) + check_walls(p["walls"], lay)
             + check_series(p["shear"], p["names"], lay)
             + check_columns(title or [], p["series_columns"], p["pc_columns"],
-                            p["protocol_columns"], readme_series(p["readme"])))
+                            p["protocol_columns"], readme_series(p["readme"]))
+            + check_single_doc(p["pair_doc"], lay))
 
 
 def test_headers_are_contiguous(layouts):
@@ -330,6 +362,8 @@ def test_checks_can_fail(places, layouts):
         "analysis P_c": dict(places, pc_columns=tuple(places["pc_columns"][:-1])),
         "runfiles.py": dict(places, protocol_columns=list(places["protocol_columns"])[::-1]),
         "README.md": dict(places, readme=places["readme"].replace("| 7 | `tau` |", "| 7 | `p` |")),
+        "pair doc": dict(places, pair_doc=places["pair_doc"].replace("* p15 = :math:`f_n`",
+                                                                     "* p14 = :math:`f_n`")),
     }
     for where, p in moved.items():
         assert all_problems(p, layouts), f"moving {where} alone went unseen"
@@ -340,3 +374,6 @@ def test_checks_can_fail(places, layouts):
     lay = {k: dict(v) for k, v in layouts.items()}
     lay["wall"]["HI_Z"] += 1
     assert check_walls(places["walls"], lay)
+    lay = {k: dict(v) for k, v in layouts.items()}
+    lay["single"]["TWIST"] += 1
+    assert check_single_doc(places["pair_doc"], lay)

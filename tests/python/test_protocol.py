@@ -521,8 +521,8 @@ def test_stock_deck_runs_the_protocol(protocol, tmp_path):
     assert abs(prep["z_g"] - ref["z_g"]) < 4 * 2 ** 0.5 * 0.050
     assert ru_max >= 0.99
     assert "GRFLOW shear: done" in (out / "log.shear.lammps").read_text()
-    # its contacts snapshots carry the normal force too (pair/local p11 is
-    # not f_n in stock pair granular)
+    # its contacts snapshots carry the normal force too (pair/local's
+    # "force" is f_n for both styles; p15 is GRFLOW's alone)
     assert check_snapshots_against_series(out)[0] >= 3
 
 
