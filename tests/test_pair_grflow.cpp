@@ -480,11 +480,11 @@ TEST_F(Packings, SingleReproducesForcesAndTorques)
     }
     const double r = q[0];
     worst_r = std::max(worst_r, std::fabs(std::sqrt(dot3(del, del)) - r) / r);
-    // p10-p12: the branch vector x_i - x_j of the pair single() evaluated
-    for (int k = 0; k < 3; k++) worst_r = std::max(worst_r, std::fabs(q[8 + k] - del[k]) / r);
     const double fn = q[12], ft[3] = {q[1], q[2], q[3]}, fr[3] = {q[4], q[5], q[6]},
                  twist = q[7], fo = q[11];
-    if (r >= rad[i] + rad[j]) continue;
+    if (r >= rad[i] + rad[j]) continue;    // no contact: single() gives zeros
+    // p10-p12: the branch vector x_i - x_j of the pair single() evaluated
+    for (int k = 0; k < 3; k++) worst_r = std::max(worst_r, std::fabs(q[8 + k] - del[k]) / r);
     contacts++;
     sliding += ft[0] != 0.0;
     rolling += fr[0] != 0.0;
@@ -619,6 +619,9 @@ void compare_with_stock(const std::string &data, bool torsion, double reff, bool
     auto pa = (double **) lammps_extract_compute(a.handle, "pl", LMP_STYLE_LOCAL, LMP_TYPE_ARRAY);
     auto pb = (double **) lammps_extract_compute(b.handle, "pl", LMP_STYLE_LOCAL, LMP_TYPE_ARRAY);
     for (int k = 0; k < 12; k++) {
+      // stock pair granular without a twisting model never sets its p9
+      // (GranularModel::magtortwist is left as it was); GRFLOW gives 0
+      if (k == SingleLayout::TWIST && !torsion) continue;
       double scale = 0.0, diff = 0.0;
       for (int row = 0; row < rows; row++) {
         scale = std::max(scale, std::fabs(pb[row][k]));

@@ -81,10 +81,12 @@ namespace GRFLOW {
   // n, branch vector x_i - x_j), then GRFLOW's own (torsion force f_o, its
   // magnitude, normal force f_n)
   struct SingleLayout {
+    // clang-format off
     enum {
       FS_X, FS_Y, FS_Z, FS_LEN, FR_X, FR_Y, FR_Z, FR_LEN, TWIST, DX, DY, DZ, FO, FO_LEN, FN,
       NVALUES
     };
+    // clang-format on
   };
 
   static GRFLOW_INLINE double dot3(const double *a, const double *b)

@@ -1,6 +1,10 @@
 """fix grflow/shear and fix grflow/compress in LIGGGHTS 3.8 against LAMMPS:
-the same commands from one host-free core (src/shared/grflow_shear_rule.h,
-grflow_servo.h) behind each host's glue (src/GRFLOW, src/LIGGGHTS).
+the same classes (src/GRFLOW) compiled into both, so what is compared is
+what still differs: compute grflow/network's contact forces (LIGGGHTS's
+contact model and its history, GRFLOW::PairContacts of
+grflow_host_liggghts.cpp, against Pair::single()), LIGGGHTS's atoms,
+neighbor lists and communication, its restart files (which do not keep
+the simulated time: the shear fix appends it) and its number parsing.
 
 - Shear: the packing of tests/decks/wall_packing.lmp (144 spheres between
   two walls, a data file both hosts read), sheared at constant height with
@@ -22,7 +26,10 @@ grflow_servo.h) behind each host's glue (src/GRFLOW, src/LIGGGHTS).
   run although LIGGGHTS restart files do not keep the simulated time, and
   the servo's damped gain factors come back.  Damaged restart data stop
   with an error naming the fix.
-- Bad arguments: LIGGGHTS stops with a message naming the parameter.
+- Bad arguments, where the hosts differ: LIGGGHTS's own parsing of
+  numbers, integers, yes/no and missing values, and its number format in
+  messages; variables found through grflow_host_liggghts.cpp.  The rules
+  themselves are the classes', tested in LAMMPS (tests/test_fix_*.cpp).
 
 Environment: LMP, LIGGGHTS (a liggghts built with GRFLOW,
 scripts/build-liggghts.sh), MPIEXEC, GRFLOW_TEST_DECKS.
@@ -374,39 +381,18 @@ CELL = ("units si\natom_style granular\nboundary p p f\nnewton off\n"
 SHEAR = "fix sh all grflow/shear w net 0.02 1000"
 COMPRESS = "fix c all grflow/compress w net 1e5 10"
 
+# where the hosts differ (grflow_host_liggghts.cpp): parsing numbers,
+# integers and yes/no, missing values, numbers in messages
 BAD = [
-    ("fix sh all grflow/shear w net 0.02",
-     "Illegal fix grflow/shear command: expected wall-ID compute-ID vx tau_amp"),
-    ("fix sh all grflow/shear w net 0 1000", "Fix grflow/shear vx must be > 0, got 0"),
     ("fix sh all grflow/shear w net abc 1000", "fix grflow/shear vx expects a number, got 'abc'"),
     ("fix sh all grflow/shear w net 0.02 1e3x", "fix grflow/shear tau_amp expects a number"),
     ("fix sh all grflow/shear w net 0.02 -5", "Fix grflow/shear tau_amp must be > 0, got -5"),
     (SHEAR + " every 2.5", "fix grflow/shear every expects an integer, got '2.5'"),
-    (SHEAR + " every 0", "Fix grflow/shear every must be >= 1"),
     (SHEAR + " every", "Illegal fix grflow/shear every command: missing argument(s)"),
-    (SHEAR + " liquefaction 1.5",
-     "Fix grflow/shear liquefaction threshold must be in (0,1], got 1.5"),
-    (SHEAR + " stop_cycles 0", "Fix grflow/shear stop_cycles must be > 0"),
-    (SHEAR + " stop_after_liquefaction -1", "Fix grflow/shear stop_after_liquefaction must be > 0"),
-    (SHEAR + " stop_gamma 0", "Fix grflow/shear stop_gamma must be > 0"),
     (SHEAR + " progress maybe", "fix grflow/shear progress expects yes or no, got 'maybe'"),
-    (SHEAR + " glue nogroup", "Fix grflow/shear glue group nogroup does not exist"),
-    (SHEAR + " foo 1", "Unknown fix grflow/shear keyword: foo"),
-    ("fix c all grflow/compress w net 1e5",
-     "Illegal fix grflow/compress command: expected wall-ID compute-ID p_target rate_max"),
     ("fix c all grflow/compress w net 1e5 ten", "fix grflow/compress rate_max expects a number, "
                                                 "got 'ten'"),
-    ("fix c all grflow/compress w net -1e5 10", "Fix grflow/compress p_target must be > 0, got"),
-    ("fix c all grflow/compress w net 1e5 0", "Fix grflow/compress rate_max must be > 0, got 0"),
-    (COMPRESS + " gain -1", "Fix grflow/compress gain must be > 0, got -1"),
-    (COMPRESS + " tol 0", "Fix grflow/compress tol must be > 0, got 0"),
-    (COMPRESS + " ke_ratio 0", "Fix grflow/compress ke_ratio must be > 0, got 0"),
-    (COMPRESS + " every 0", "Fix grflow/compress every must be >= 1, got 0"),
     (COMPRESS + " every x", "fix grflow/compress every expects an integer, got 'x'"),
-    (COMPRESS + " every", "Illegal fix grflow/compress every command: missing argument(s)"),
-    (COMPRESS + " elastic 3",
-     "Fix grflow/compress elastic takes an equal-style variable v_name, got 3"),
-    (COMPRESS + " bogus 1", "Unknown fix grflow/compress keyword: bogus"),
 ]
 
 
@@ -428,12 +414,8 @@ def test_bad_arguments(tmp_path, line, message):
     # the mean stress at the start defines r_u: one sphere, no contact
     (["compute net all grflow/network", SHEAR, "run 0"],
      "Fix grflow/shear: the mean stress is 0 when shearing starts; it must be > 0 to define r_u"),
-    (["compute net all grflow/network", "group top id 1", SHEAR + " glue top",
-      "group top delete", "run 0"], "Fix grflow/shear glue group top was deleted"),
     (["compute net all grflow/network", COMPRESS + " elastic v_nothere", "run 0"],
      "Fix grflow/compress: variable nothere does not exist"),
-    (["compute net all grflow/network", "variable a atom x", COMPRESS + " elastic v_a", "run 0"],
-     "Fix grflow/compress: variable a is not equal-style"),
 ])
 def test_bad_setup(tmp_path, lines, message):
     rc, out = liggghts_error(tmp_path, lines)

@@ -1,10 +1,14 @@
-"""fix grflow/wall in LIGGGHTS against fix grflow/wall in LAMMPS: one
-host-free core (src/shared/grflow_wall.h, GRFLOW::FlatWalls, with the
-kernel of grflow_contact.h) behind two hosts' glue.
+"""fix grflow/wall in LIGGGHTS against fix grflow/wall in LAMMPS: the
+same class (src/GRFLOW/fix_grflow_wall.cpp) compiled into both, so what is
+compared is what still differs: the particles' contact law (LIGGGHTS's
+contact model against the pair style), LIGGGHTS's atoms, neighbor lists,
+communication and restart files, and the host pieces of
+grflow_host_liggghts.cpp and liggghts/patches/0005 (fix_modify virial,
+number parsing, Error::one).
 
 - A packing of 144 spheres between a bottom and a top wall (made by
   LAMMPS, tests/decks/wall_packing.lmp, given to both hosts as a data
-  file): equal forces, torques, wall forces, wall positions and the walls'
+  file), with the contact law of Table 1: equal forces, torques, wall forces, wall positions and the walls'
   share of the pressure at step 0, the same trajectory and wall outputs
   after 3000 steps with the top wall moving (fix_modify w wall hi vel ...),
   on 1 and 2 LIGGGHTS ranks (everything moves along x, so that spheres
@@ -12,8 +16,11 @@ kernel of grflow_contact.h) behind two hosts' glue.
 - Restart: write_restart, read_restart and the same fix continue as the
   run that wrote the file; without the per-atom wall history (a fix of
   another ID) they do not.
-- Bad input: errors that name the parameter; a sphere through a wall stops
-  the run on 1 and 2 ranks.
+- Bad input, where the hosts differ: LIGGGHTS's own number parsing
+  (the message names the parameter), fix_modify virial (LIGGGHTS's Fix
+  does not read it), and a sphere through a wall stops the run with its
+  message on 1 and 2 ranks (Error::one of patch 0005).  The other rules
+  are the class's own, tested in LAMMPS (tests/test_fix_wall.cpp).
 
 Environment: LMP (lmp), LIGGGHTS (a liggghts built with GRFLOW,
 scripts/build-liggghts.sh), MPIEXEC, GRFLOW_TEST_DECKS.
@@ -36,13 +43,17 @@ HIVEL = "16.0 -0.3 -0.01"      # the top wall: faster, sideways and down
 # friction 0.5: with less, it settles away from the walls within the run
 # and they carry no load (measured: the wall forces fall from 5 N to 0 with
 # mut 0.3 at the walls or everywhere), so these keep it at 0.5 or above;
-# with them the wall forces grow from 5 N to 20-35 N.
+# with them the wall forces grow from 5 N to 20-35 N.  The trajectories
+# are compared with Table 1's law only: the wall's arguments are read by
+# the same class in both hosts (their variants are tested in LAMMPS,
+# tests/test_fix_wall.cpp), and the contact model's coefficient variants
+# in test_liggghts.py; the restart runs use the explicit coefficients.
 EXPLICIT = dict(COEFFS["explicit"], kt=7.0e5, mut=0.6)
 VARIANTS = {
     "table1": (COEFFS["table1"], "1.0e6 1.15"),
     "explicit": (EXPLICIT, lammps_coeffs(EXPLICIT)),
-    "off_full_arm": (COEFFS["table1"], "1.0e6 1.15 mut 0.6 rolling off velocity_arm full"),
 }
+COMPARED = ["table1"]
 
 
 @pytest.fixture(scope="module")
@@ -129,10 +140,10 @@ def wall_diffs(got, ref):
 @pytest.fixture(scope="module")
 def lammps_runs(cell):
     work, data, zhi = cell
-    return {v: run_lammps_cell(work, data, zhi, v, STEPS) for v in VARIANTS}
+    return {v: run_lammps_cell(work, data, zhi, v, STEPS) for v in COMPARED}
 
 
-@pytest.mark.parametrize("variant", sorted(VARIANTS))
+@pytest.mark.parametrize("variant", COMPARED)
 @pytest.mark.parametrize("nprocs", [1, 2])
 def test_same_forces_walls_and_trajectory(cell, lammps_runs, variant, nprocs):
     work, data, zhi = cell
@@ -266,40 +277,19 @@ BOX = ("units si\natom_style granular\nboundary p p {zb}\n{procs}"
        "communicate single vel yes\ntimestep 1e-7\n")
 FIX = "fix w all grflow/wall 1.0e6 1.15 zlo 0.001 zhi 0.009\n"
 
+# where the hosts differ: LIGGGHTS's FixHost parses numbers and words
+# (grflow_host_liggghts.cpp), formats numbers in messages, and reads
+# fix_modify virial; the rest of the rules are the class's, tested in LAMMPS
 BAD_FIX = [
-    ("fix w all grflow/wall 1.0e6", "Incorrect args for fix grflow/wall: expected kn cn"),
-    ("fix w all grflow/wall 1.0e6 1.15", "Fix grflow/wall needs a wall: zlo and/or zhi"),
     ("fix w all grflow/wall 1.0e6 1.15 zlo", "Illegal fix grflow/wall zlo command: missing"),
     ("fix w all grflow/wall 1.0e6 1.15 zlo abc",
      "fix grflow/wall zlo expects a number, got 'abc'"),
     ("fix w all grflow/wall 1.0e6 1.15 kt 1x zlo 0",
      "fix grflow/wall kt expects a number, got '1x'"),
-    ("fix w all grflow/wall abc 1.15 zlo 0", "fix grflow/wall kn expects a number, got 'abc'"),
-    ("fix w all grflow/wall 1.0e6 1.15 zlo 0.0 foo 1", "Unknown fix grflow/wall keyword: foo"),
     ("fix w all grflow/wall 1.0e6 1.15 zlo 0.006 zhi 0.004",
      "Fix grflow/wall zhi 0.004 must be above zlo 0.006"),
-    ("fix w all grflow/wall 1.0e6 1.15 zlo 0.0 velocity_arm half",
-     "Unknown fix grflow/wall velocity_arm value half: expected reduced or full"),
-    ("fix w all grflow/wall 1.0e6 1.15 mut -0.1 zlo 0.0",
-     "fix grflow/wall: mut must be >= 0, got -0.1"),
-    ("fix w all grflow/wall 0 1.15 zlo 0.0", "fix grflow/wall: kn must be > 0, got 0"),
-    ("fix w all grflow/wall 1.0e6 1.15 rolling on zlo 0.0",
-     "fix grflow/wall rolling takes only the value off, not on"),
-    ("fix w all grflow/wall 1.0e6 1.15 kt", "Missing value for fix grflow/wall keyword kt"),
-    ("fix w all grflow/wall 1.0e6 1.15 zlo 0.0 kt 1.0",
-     "Fix grflow/wall contact keyword kt must come right after kn cn"),
-    (FIX + "fix_modify w wall mid vel 0 0 0", "fix_modify w wall: expected lo or hi, got mid"),
-    (FIX + "fix_modify w wall lo vel 0 0",
-     "Illegal fix_modify grflow/wall wall vel command: missing"),
     (FIX + "fix_modify w wall lo vel a 0 0", "fix_modify w wall lo vel expects a number, got 'a'"),
-    (FIX + "fix_modify w wall lo speed 0 0 0",
-     "fix_modify w wall lo: expected vel or z, got speed"),
-    (FIX + "fix_modify w wall lo z 0.0095", "fix_modify w: zhi 0.009 must be above zlo 0.0095"),
-    (FIX + "fix_modify w mut -1", "fix_modify w: mut must be >= 0, got -1"),
-    (FIX + "fix_modify w kn 0", "fix_modify w: kn must be > 0, got 0"),
     (FIX + "fix_modify w virial maybe", "fix_modify w virial: expected yes or no, got maybe"),
-    (FIX.replace("zhi 0.009", "") + "fix_modify w wall hi vel 0 0 -1",
-     "fix_modify w wall hi: this fix has no such wall"),
 ]
 
 
@@ -310,14 +300,6 @@ def test_bad_input_names_the_parameter(tmp_path, line, message):
     proc = run_liggghts(["-in", str(deck)], tmp_path, check=False)
     assert proc.returncode != 0
     assert message in proc.stdout + proc.stderr
-
-
-def test_periodic_z_is_an_error(tmp_path):
-    deck = tmp_path / "in.bad"
-    deck.write_text(BOX.format(zb="p", procs="") + FIX)
-    proc = run_liggghts(["-in", str(deck)], tmp_path, check=False)
-    assert proc.returncode != 0
-    assert "Fix grflow/wall needs a non-periodic z boundary" in proc.stdout + proc.stderr
 
 
 @pytest.mark.parametrize("nprocs", [1, 2])
