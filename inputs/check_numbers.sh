@@ -8,10 +8,12 @@
 # error's last line is ${grflow_quit}, which the including deck defines as
 # its host's quit with a non-zero status ("quit 1" in LAMMPS; "quit" in
 # LIGGGHTS 3.8, whose quit takes no argument).
+# OUT's folder (the run's outdir) is made first, parents included.
 #   usage: sh check_numbers.sh OUT NAME VALUE [NAME VALUE ...]
 set -eu
 out=${1:?usage: check_numbers.sh OUT NAME VALUE ...}
 shift
+mkdir -p "$(dirname "$out")"
 bad=""
 while [ $# -ge 2 ]; do
   if ! printf '%s\n' "$2" | grep -Eq '^[+-]?([0-9]+[.]?[0-9]*|[.][0-9]+)([eE][+-]?[0-9]+)?$'; then
