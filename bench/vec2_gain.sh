@@ -22,19 +22,22 @@
 # Environment: OUT (default build/bench/vec2), PIN (a command put before
 # every run, e.g. "taskset -c 1"; default none), LMP etc. as shear_ab.sh.
 # Writes OUT/rounds.tsv (one row per run: round, state, variant, steps,
-# loop time (the sum of the deck's run segments' "Loop time"), Pair time,
-# CPU time of the run's process tree (user + sys, /usr/bin/time: lmp with
-# its setup, and profile_shear.py), the 1-minute load average before the
-# run) and OUT/shear_ab.log (shear_ab.sh's output, with `uptime` before
-# each round); prints the rows and, per state, the per-round ratios
-# scalar / vec2 of the loop time and of the CPU time with their median,
-# min and max.  A ratio of 1.05 means the lanes save 4.8% of a step
-# (1 - 1/1.05).
+# loop time (the sum of the deck's run segments' "Loop time", wall
+# clock), loop CPU time (each segment's loop time times its "% CPU use"),
+# Pair time, CPU time of the run's process tree (user + sys,
+# /usr/bin/time: lmp with its setup, and profile_shear.py), the 1-minute
+# load average before the run) and OUT/shear_ab.log (shear_ab.sh's
+# output, with `uptime` before each round); prints the rows and, per
+# state, the per-round ratios scalar / vec2 of the loop time, the loop
+# CPU time and the process CPU time, with their median, min and max.  On
+# a machine that other jobs share, the wall-clock loop time carries the
+# time the run waited for a core; the CPU times do not.  A ratio of 1.05
+# means the lanes save 4.8% of a step (1 - 1/1.05).
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 . "$top/bench/commands.sh"
 python=$(grflow_command grflow-python)
-[ $# -ge 4 ] || { sed -n '2,33p' "$0" >&2; exit 2; }
+[ $# -ge 4 ] || { sed -n '2,35p' "$0" >&2; exit 2; }
 lmp_vec2=$(realpath "$1")
 lmp_scalar=$(realpath "$2")
 rounds=$3
@@ -43,7 +46,7 @@ out=${OUT:-$top/build/bench/vec2}
 mkdir -p "$out"
 tsv=$out/rounds.tsv
 log=$out/shear_ab.log
-printf 'round\tstate\tvariant\tsteps\tloop_s\tpair_s\tcpu_s\tload1\n' > "$tsv"
+printf 'round\tstate\tvariant\tsteps\tloop_s\tloop_cpu_s\tpair_s\tcpu_s\tload1\n' > "$tsv"
 : > "$log"
 for round in $(seq 1 "$rounds"); do
   echo "== round $round: $(uptime)" | tee -a "$log"
@@ -61,9 +64,10 @@ for round in $(seq 1 "$rounds"); do
       cpu=$(awk '{print $1 + $2}' "$out/time.txt")
       # the run segments of the deck: steps, loop time and Pair time summed
       awk -v r="$round" -v s="$state" -v v="$variant" -v c="$cpu" -v l="$load" '
-        /^Loop time of/ {t += $4; n += $9}
+        /^Loop time of/ {t += $4; n += $9; last = $4}
+        /% CPU use with/ {u += last * $1 / 100}
         /^Pair +\|/ {split($0, f, "|"); p += f[3]}
-        END {printf "%d\t%s\t%s\t%d\t%.3f\t%.3f\t%.2f\t%s\n", r, s, v, n, t, p, c, l}' \
+        END {printf "%d\t%s\t%s\t%d\t%.3f\t%.3f\t%.3f\t%.2f\t%s\n", r, s, v, n, t, u, p, c, l}' \
         "$out/$state/$variant/log.shear.lammps" | tee -a "$tsv"
     done
   done
@@ -72,20 +76,23 @@ done
 import statistics, sys
 rows = [l.rstrip("\n").split("\t") for l in open(sys.argv[1])][1:]
 runs = {(int(r[0]), r[1], r[2]): r for r in rows}
+# columns: 4 loop (wall), 5 loop CPU, 7 CPU of the run's processes
+measures = (("loop", 4), ("loop CPU", 5), ("process CPU", 7))
 for state in dict.fromkeys(r[1] for r in rows):
     rounds = sorted({k[0] for k in runs if k[1] == state})
-    print(f"\n{state}: per round, steps/s vec2 | scalar, ratio scalar/vec2 of loop time | of CPU time")
-    loop_ratios, cpu_ratios = [], []
+    print(f"\n{state}: per round, steps/s vec2 | scalar (loop time), "
+          "ratios scalar/vec2 of loop time | loop CPU time | process CPU time")
+    ratios = {m: [] for m, _ in measures}
     for r in rounds:
         a, b = runs[(r, state, "vec2")], runs[(r, state, "scalar")]
-        rl = float(b[4]) / float(a[4])
-        rc = float(b[6]) / float(a[6])
-        loop_ratios.append(rl)
-        cpu_ratios.append(rc)
-        print(f"  round {r}: {int(a[3]) / float(a[4]):7.1f} | {int(b[3]) / float(b[4]):7.1f} steps/s,"
-              f" loop {rl:.4f}, cpu {rc:.4f} (load {a[7]}, {b[7]})")
-    for name, x in (("loop", loop_ratios), ("cpu", cpu_ratios)):
+        for m, col in measures:
+            ratios[m].append(float(b[col]) / float(a[col]))
+        print(f"  round {r}: {int(a[3]) / float(a[4]):7.1f} | {int(b[3]) / float(b[4]):7.1f} steps/s, "
+              + " | ".join(f"{ratios[m][-1]:.4f}" for m, _ in measures)
+              + f" (load {a[8]}, {b[8]})")
+    for m, _ in measures:
+        x = ratios[m]
         med = statistics.median(x)
-        print(f"  {name} ratio scalar/vec2: median {med:.4f}, min {min(x):.4f}, max {max(x):.4f}"
+        print(f"  {m} ratio scalar/vec2: median {med:.4f}, min {min(x):.4f}, max {max(x):.4f}"
               f" over {len(x)} rounds; the lanes save {100 * (1 - 1 / med):.1f}% of a step (median)")
 EOF
