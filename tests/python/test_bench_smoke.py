@@ -123,6 +123,24 @@ def test_shear_ab(run_dir, tmp_path):
     assert "round 1 one | Pair |" in text
 
 
+def test_vec2_gain(run_dir, tmp_path):
+    """Two states (a prep.restart and a shear restart file), two rounds,
+    the same binary as both variants: 8 runs, the table and the ratios."""
+    quick = "-var preset quick"
+    text = bench("vec2_gain.sh", LMP, LMP, 2,
+                 f"jam|{run_dir / 'prep.restart'}|300|{quick}",
+                 f"sheared|{run_dir / 'shear.restart.1000'}|300|{quick}",
+                 env={"OUT": str(tmp_path)})
+    rows = (tmp_path / "rounds.tsv").read_text().splitlines()[1:]
+    assert len(rows) == 8
+    assert all(r.split("\t")[3] == "300" for r in rows)
+    # even rounds run the scalar binary first
+    assert [r.split("\t")[2] for r in rows[4:6]] == ["scalar", "vec2"]
+    for state in ("jam", "sheared"):
+        assert f"{state}: per round" in text
+    assert text.count("loop ratio scalar/vec2: median") == 2
+
+
 def test_sample_shear_speed(run_dir, tmp_path):
     """Samples at steps 0 (prep.restart) and 2000 (EVERY=2), 1 core and 2
     ranks each, and the predicted time of the 3000-step stage."""
