@@ -5,10 +5,12 @@
 #   grflow_compile_settings(TREE OPTIONS_VAR DEFINITIONS_VAR)
 #
 # TREE: the LAMMPS source tree the sources are compiled against.
-# - -ffp-contract=off (GCC, Clang): the two-lane contact kernel equals its
-#   scalar reference bit for bit only without fused multiply-adds (GCC
-#   fuses a*b+c by default when the target has FMA, e.g. -march=native;
-#   the default x86-64 target has none; tests: kernel_fma.*).
+# - -ffp-contract=off (GCC, Clang): no fused multiply-adds, so that the
+#   contact law gives the same numbers to the bit on every x86-64 target
+#   and in both hosts (GCC fuses a*b+c by default when the target has FMA,
+#   e.g. -march=native; the default x86-64 target has none): LIGGGHTS's
+#   build uses the same flag (scripts/build-liggghts.sh), and the tests
+#   that compare the hosts or builds byte for byte rely on it.
 # - GRFLOW_PAIR_HAS_ATOM2CUT (src/GRFLOW/pair_granular_grflow.h): 1 if the
 #   tree's Pair still has the virtual atom2cut() (4Feb2025), 0 if not
 #   (4Jul2026).

@@ -27,7 +27,6 @@
 
 #include "grflow_contact_coeffs.h"
 
-#include <cfloat>
 #include <cmath>
 
 // the kernel is called once per neighbor pair: it must be inlined into the
@@ -209,18 +208,19 @@ namespace GRFLOW {
   }
 
   /* ----------------------------------------------------------------------
-     full contact, one mode after the other (scalar reference): forces and
-     torques on i and j from coefficients c, geometry g, relative velocity
-     vrel = v_i - v_j, spins wi, wj.  hist points to HIST_SIZE values; they
-     are advanced by dt only if update.  contact_forces() below gives the
-     same numbers, bit for bit, with the sliding and rolling springs in the
-     two lanes of one vector.
+     full contact, one mode after the other: forces and torques on i and j
+     from coefficients c, geometry g, relative velocity vrel = v_i - v_j,
+     spins wi, wj.  hist points to HIST_SIZE values; they are advanced by
+     dt only if update.  (Until 2026-11-28 a second form ran the sliding
+     and rolling springs in the two lanes of one SSE2 vector, to the bit
+     the same numbers; on the whole shear step it bought 5% jammed and 2%
+     liquefied, below the bar of 5% for a second implementation:
+     doc/studies/pair-benchmark.md.)
   ------------------------------------------------------------------------- */
 
-  static GRFLOW_INLINE void contact_forces_reference(const ContactCoeffs &c,
-                                                     const ContactGeometry &g, const double *vrel,
-                                                     const double *wi, const double *wj, double dt,
-                                                     bool update, double *hist, ContactForces &out)
+  static GRFLOW_INLINE void contact_forces(const ContactCoeffs &c, const ContactGeometry &g,
+                                           const double *vrel, const double *wi, const double *wj,
+                                           double dt, bool update, double *hist, ContactForces &out)
   {
     const double *n = g.n;
 
@@ -301,187 +301,6 @@ namespace GRFLOW {
     out.torque_j[2] = -g.arm_j * nxft[2] - tc[2];
   }
 
-  /* ----------------------------------------------------------------------
-     two lanes: the sliding spring (lane 0) and the rolling spring (lane 1)
-     go through the same operations (rotation into the tangent plane,
-     advance, spring-dashpot force, Coulomb cap, slip reset), so they run
-     together in one 2-double vector (SSE2 on x86-64, NEON on arm64).
-     Each lane does exactly the scalar operations in the scalar order, so
-     the results equal contact_forces_reference() bit for bit
-     (tests/test_contact_kernel.cpp checks this) as long as the compiler
-     does not fuse a*b+c into FMA instructions: GRFLOW's builds pass
-     -ffp-contract=off (with contraction, on an FMA target, 648 of the
-     test's 4000 contacts differed in the last bits).  GCC and Clang vector
-     extensions; other compilers, or -D GRFLOW_NO_VEC2, use the scalar
-     reference.
-  ------------------------------------------------------------------------- */
-
-#if (defined(__GNUC__) || defined(__clang__)) && !defined(GRFLOW_NO_VEC2)
-#define GRFLOW_HAVE_VEC2 1
-
-  typedef double vec2 __attribute__((vector_size(16)));
-  typedef long long mask2 __attribute__((vector_size(16)));
-
-  static GRFLOW_INLINE vec2 select2(mask2 m, vec2 a, vec2 b)
-  {
-    return (vec2) (((mask2) a & m) | ((mask2) b & ~m));
-  }
-
-  static GRFLOW_INLINE bool any2(mask2 m)
-  {
-    return (m[0] | m[1]) != 0;
-  }
-
-  static GRFLOW_INLINE vec2 sqrt2(vec2 a)
-  {
-#if defined(__SSE2__)
-    return __builtin_ia32_sqrtpd(a);    // one sqrtpd (x86-64)
-#else
-    return vec2{sqrt(a[0]), sqrt(a[1])};
-#endif
-  }
-
-  // rotate both springs into the plane normal to n (rotate_into_plane() per
-  // lane); a lane with a large turn takes the scalar path
-
-  static GRFLOW_INLINE void rotate_into_plane2(vec2 *x, const double *n)
-  {
-    const vec2 p = x[0] * n[0] + x[1] * n[1] + x[2] * n[2];
-    const vec2 len2 = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
-    const vec2 p2 = p * p;
-    if (any2(p2 > 1.0e-6 * len2)) {
-      for (int lane = 0; lane < 2; lane++) {
-        double xi[3] = {x[0][lane], x[1][lane], x[2][lane]};
-        rotate_into_plane(xi, n);
-        for (int k = 0; k < 3; k++) x[k][lane] = xi[k];
-      }
-      return;
-    }
-    // an empty spring (len2 = 0) gets q = 0; len2 + DBL_MIN = len2 otherwise
-    const vec2 q = p2 / (len2 + DBL_MIN);
-    const vec2 s = 1.0 + q * (0.5 + 0.375 * q);
-    for (int k = 0; k < 3; k++) x[k] = (x[k] - p * n[k]) * s;
-  }
-
-  // spring_dashpot_capped() on both lanes: k, c, cap per lane; f gets the forces
-
-  static GRFLOW_INLINE void spring_dashpot_capped2(vec2 k, vec2 c, vec2 cap, const vec2 *v,
-                                                   double dt, bool update, vec2 *x, vec2 *f)
-  {
-    if (update)
-      for (int d = 0; d < 3; d++) x[d] += v[d] * dt;
-    for (int d = 0; d < 3; d++) f[d] = -k * x[d] - c * v[d];
-    const vec2 f2 = f[0] * f[0] + f[1] * f[1] + f[2] * f[2];
-    // both lanes take the capped force and the slip reset, and the slip
-    // mask selects: no branch to mispredict
-    const mask2 slip = (f2 > cap * cap);
-    const vec2 s = cap / sqrt2(f2);
-    // a slipping spring restarts at the length that gives the capped
-    // force; with k = 0 there is no spring (kinv = 0 gives x = 0)
-    const vec2 zero = {0.0, 0.0};
-    const vec2 kinv = select2(k > zero, 1.0 / k, zero);
-    for (int d = 0; d < 3; d++) {
-      f[d] = select2(slip, f[d] * s, f[d]);
-      x[d] = select2(slip, -(f[d] + c * v[d]) * kinv, x[d]);
-    }
-  }
-
-  /* ----------------------------------------------------------------------
-     full contact: the same as contact_forces_reference(), with the sliding
-     and rolling springs in two lanes
-  ------------------------------------------------------------------------- */
-
-  static GRFLOW_INLINE void contact_forces(const ContactCoeffs &c, const ContactGeometry &g,
-                                           const double *vrel, const double *wi, const double *wj,
-                                           double dt, bool update, double *hist, ContactForces &out)
-  {
-    const double *n = g.n;
-
-    // normal
-
-    const double vn = dot3(vrel, n);
-    const double fn = normal_force(c.normal_law, c.kn, c.cn, g.delta, vn);
-    const double fnc = fabs(fn);    // for the caps
-    out.fn = fn;
-
-    // mode velocities: lane 0 sliding (contact-point velocity), lane 1
-    // rolling v_r = -a' n x (w_i - w_j)
-
-    double warm[3], wxn[3], wrel[3], nxw[3];
-    warm[0] = g.varm_i * wi[0] + g.varm_j * wj[0];
-    warm[1] = g.varm_i * wi[1] + g.varm_j * wj[1];
-    warm[2] = g.varm_i * wi[2] + g.varm_j * wj[2];
-    cross3(warm, n, wxn);
-    wrel[0] = wi[0] - wj[0];
-    wrel[1] = wi[1] - wj[1];
-    wrel[2] = wi[2] - wj[2];
-    cross3(n, wrel, nxw);
-    vec2 v[3], x[3], f[3];
-    for (int d = 0; d < 3; d++) {
-      v[d][0] = vrel[d] - vn * n[d] - wxn[d];
-      v[d][1] = -g.reff * nxw[d];
-      x[d][0] = hist[HIST_SLIDE + d];
-      x[d][1] = hist[HIST_ROLL + d];
-    }
-    double xio = hist[HIST_TORSION];
-
-    if (update) rotate_into_plane2(x, n);
-    const vec2 k = {c.kt, c.kr};
-    const vec2 cv = {c.ct, c.cr};
-    const vec2 mu = {c.mut, c.mur};
-    spring_dashpot_capped2(k, cv, mu * fnc, v, dt, update, x, f);
-
-    // torsion: v_o = a' (w_i - w_j).n
-
-    const double vo = g.reff * dot3(wrel, n);
-    {
-      // spring_dashpot_capped() for a scalar, written out without branches
-      // (the same numbers; calling it instead measured 3-4% slower)
-      const double cap = c.muo * fnc;
-      if (update) xio += vo * dt;
-      const double fo = -c.ko * xio - c.co * vo;
-      const double fc = (fo > cap) ? cap : ((fo < -cap) ? -cap : fo);
-      const double xr = (c.ko > 0.0) ? -(fc + c.co * vo) / c.ko : 0.0;
-      xio = (fabs(fo) > cap) ? xr : xio;
-      out.fo = fc;
-    }
-
-    if (update) {
-      for (int d = 0; d < 3; d++) {
-        hist[HIST_SLIDE + d] = x[d][0];
-        hist[HIST_ROLL + d] = x[d][1];
-      }
-      hist[HIST_TORSION] = xio;
-    }
-
-    // n x f_t and n x f_r in the two lanes
-
-    const vec2 nxf[3] = {n[1] * f[2] - n[2] * f[1], n[2] * f[0] - n[0] * f[2],
-                         n[0] * f[1] - n[1] * f[0]};
-    for (int d = 0; d < 3; d++) {
-      out.ft[d] = f[d][0];
-      out.fr[d] = f[d][1];
-      out.f[d] = fn * n[d] + f[d][0];
-
-      // torques: sliding -(a - delta/2) n x f_t on both;
-      // rolling +-a' n x f_r and torsion +-a' f_o n, opposite on j
-
-      const double tc = g.reff * (nxf[d][1] + out.fo * n[d]);
-      out.torque_i[d] = -g.arm_i * nxf[d][0] + tc;
-      out.torque_j[d] = -g.arm_j * nxf[d][0] - tc;
-    }
-  }
-
-#else
-#define GRFLOW_HAVE_VEC2 0
-
-  static GRFLOW_INLINE void contact_forces(const ContactCoeffs &c, const ContactGeometry &g,
-                                           const double *vrel, const double *wi, const double *wj,
-                                           double dt, bool update, double *hist, ContactForces &out)
-  {
-    contact_forces_reference(c, g, vrel, wi, wj, dt, update, hist, out);
-  }
-#endif
 
   /* ----------------------------------------------------------------------
      the arm of a contact: distance from the centre of a sphere of radius
