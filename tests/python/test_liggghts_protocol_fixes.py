@@ -15,7 +15,8 @@ grflow_servo.h) behind each host's glue (src/GRFLOW, src/LIGGGHTS).
   130 kPa (as in test_compress_mpi.py).  Before the packing jams the hosts
   agree to round-off; the compression through jamming is chaotic (round-
   off grows to 1e-3 of the box), so the hosts are held to the target
-  there and compared closely on the dense packing.
+  there and compared on the dense packing to what round-off gives there
+  (test_compress_mpi.py's DENSE_BOX_REL, DENSE_STRESS_REL).
 - Restart in LIGGGHTS: a run split by write_restart and continued from
   that file gives the split run's checks bit for bit; the shear's times
   (time and N of initial liquefaction, after the restart) go on as in one
@@ -43,6 +44,7 @@ import numpy as np
 import pytest
 
 from lmprun import DECKS, run_lmp
+from test_compress_mpi import DENSE_BOX_REL, DENSE_STRESS_REL
 from test_liggghts import portable_data, run_liggghts
 
 LDECKS = os.path.join(DECKS, "liggghts")
@@ -57,6 +59,7 @@ COMPRESS_NAMES = ["converged", "sxx", "syy", "szz", "errmax", "ke", "eel", "rati
                   "factor_z"]
 COMPRESS_SPLIT = 20005    # after the gain factors were halved, between servo steps
 RESTART_TAG = -7.3e301    # the header of a GRFLOW fix's restart data
+FLAG_MARGIN = 0.2         # test_compress_dense_packing_same: where the flags must agree
 
 
 def records(path, names):
@@ -341,19 +344,39 @@ def test_compress_dense_packing_same(compress_cell, compress_from_gas):
           f"{end}: relative differences " + ", ".join(f"{k} {v:.1e}" for k, v in diff.items()))
     for k in ("sxx", "syy", "szz"):
         assert abs(lam[end][k] - 1.3e5) < 0.05e5 and abs(lig[end][k] - 1.3e5) < 0.05e5
-    # the thresholds of test_compress_mpi.py (LAMMPS on other rank counts):
-    # the hosts differ in summation order only
+    # the hosts differ by round-off (the order of sums; the masses' last
+    # place with LAMMPS 4Jul2026), which the 20000 steps carry to a size
+    # that depends on the packing: the thresholds of test_compress_mpi.py,
+    # measured on 16 packings.  Here LAMMPS makes the packing, so it
+    # differs between LAMMPS versions (4Jul2026's masses change the gas
+    # stage's round-off): measured 2.2e-10 in the box and 4.4e-7 in the
+    # stresses with 4Feb2025, 1.8e-8 (ly) and 3.4e-5 (szz) with 4Jul2026.
+    # On the same packing and with the same masses the two LAMMPS versions
+    # give the same run bit for bit.
     for k in ("lx", "ly", "h", "e"):
-        assert diff[k] < 1e-8, k
+        assert diff[k] < DENSE_BOX_REL, k
     for k in ("sxx", "syy", "szz"):
-        assert diff[k] < 1e-5, k
+        assert diff[k] < DENSE_STRESS_REL, k
     # the convergence flag: the test of grflow_servo.h on LIGGGHTS's values,
-    # and LAMMPS's flag wherever round-off cannot tip it
+    # and LAMMPS's flag wherever round-off cannot tip it, where the error and
+    # the kinetic energy ratio are farther than FLAG_MARGIN of their bounds
+    # from them.  At any step of the dense stage round-off moves them by up
+    # to 3.2e-2 of tol and 1.4e-2 of ke_ratio (LIGGGHTS against LAMMPS:
+    # 1.3e-2 and 4.5e-3), kn changed by 1e-15 to 1e-5 by up to 7.8e-2 and
+    # 8.8e-2 (bench/dense_roundoff.py, 16 packings); FLAG_MARGIN is over
+    # twice the largest.  (At 1e-4, LAMMPS 4Jul2026's packing tipped the flag
+    # at step 18300: ratio 9.96e-4 in LIGGGHTS, 1.0006e-3 in LAMMPS.)  Near
+    # convergence the ratio stays within it, so the steps compared (157 of
+    # 200 with LAMMPS 4Feb2025, 159 with 4Jul2026) are unconverged ones.
     for s in lig:
         ratio, err = lig[s]["ratio"], lig[s]["errmax"]
         assert lig[s]["converged"] == float(err <= 0.01 and ratio <= 1.0e-3), s
-        if abs(ratio / 1.0e-3 - 1.0) > 1e-4 and abs(err / 0.01 - 1.0) > 1e-4:
-            assert lig[s]["converged"] == lam[s]["converged"], s
+    far = [s for s in lig if abs(lig[s]["ratio"] / 1.0e-3 - 1.0) > FLAG_MARGIN
+           and abs(lig[s]["errmax"] / 0.01 - 1.0) > FLAG_MARGIN]
+    print(f"[ measured ] compress, dense packing: flags compared at {len(far)} of {len(lig)} "
+          f"checks, {sum(lig[s]['converged'] for s in far):g} of them converged")
+    for s in far:
+        assert lig[s]["converged"] == lam[s]["converged"], s
 
 
 def test_compress_damaged_restart(compress_cell, compress_from_gas):
