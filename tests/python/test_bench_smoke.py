@@ -229,3 +229,21 @@ def test_host_agreement_and_steprate_liggghts(tmp_path):
     assert sorted((r[0], r[1]) for r in rows) == [("lammps", "jammed"), ("lammps", "liquefied"),
                                                   ("liggghts", "jammed"),
                                                   ("liggghts", "liquefied")], text
+
+
+@needs_liggghts
+def test_dense_roundoff_liggghts(tmp_path):
+    """One packing (3000 gas steps), 500 dense steps: the round-off runs,
+    LIGGGHTS and one kn change against the reference, and the summary."""
+    env = dict(os.environ, LMP=LMP, LIGGGHTS=LIGGGHTS, OMP_NUM_THREADS="1", PACKINGS="1",
+               GAS_STEPS="3000", DENSE_STEPS="500", KN_DELTAS="1e-3", KN_ON="lmp")
+    env.pop("LMP2", None)
+    start = time.time()
+    proc = subprocess.run([sys.executable, str(BENCH / "dense_roundoff.py"), str(tmp_path)],
+                          env=env, capture_output=True, text=True, timeout=300)
+    print(f"[ measured ] bench/dense_roundoff.py: {time.time() - start:.1f} s")
+    assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
+    runs = [line.split()[1] for line in (tmp_path / "table.txt").read_text().splitlines()
+            if not line.startswith("#")]
+    assert runs == ["newton", "sort", "x2", "z2", "ulp", "liggghts", "kn*(1+1e-3)"]
+    assert "largest relative differences at step 500, 1 packing(s):" in proc.stdout

@@ -19,7 +19,8 @@ the simulated time: the shear fix appends it) and its number parsing.
   130 kPa (as in test_compress_mpi.py).  Before the packing jams the hosts
   agree to round-off; the compression through jamming is chaotic (round-
   off grows to 1e-3 of the box), so the hosts are held to the target
-  there and compared closely on the dense packing.
+  there and compared on the dense packing to what round-off gives there
+  (test_compress_mpi.py's DENSE_BOX_REL, DENSE_STRESS_REL).
 - Restart in LIGGGHTS: a run split by write_restart and continued from
   that file gives the split run's checks bit for bit; the shear's times
   (time and N of initial liquefaction, after the restart) go on as in one
@@ -30,6 +31,14 @@ the simulated time: the shear fix appends it) and its number parsing.
   numbers, integers, yes/no and missing values, and its number format in
   messages; variables found through grflow_host_liggghts.cpp.  The rules
   themselves are the classes', tested in LAMMPS (tests/test_fix_*.cpp).
+
+What differs between the hosts: the order of the sums, and with LAMMPS
+4Jul2026 the masses.  Both hosts read the same data file, whose Atoms
+lines give diameter and density; LIGGGHTS (and LAMMPS 4Feb2025) make the
+mass 4.0*MY_PI/3.0 * r^3 * density, LAMMPS 4Jul2026 MY_4PI3 * r^3 *
+density (AtomVecSphere::data_atom_post), a constant one ulp larger: up to
+4.4e-16 apart (192 of the 216 spheres of the compression's dense
+packing).
 
 Environment: LMP, LIGGGHTS (a liggghts built with GRFLOW,
 scripts/build-liggghts.sh), MPIEXEC, GRFLOW_TEST_DECKS.
@@ -42,6 +51,7 @@ import numpy as np
 import pytest
 
 from lmprun import DECKS, run_lmp
+from test_compress_mpi import DENSE_BOX_REL, DENSE_STRESS_REL
 from test_liggghts import portable_data, run_liggghts
 
 LDECKS = os.path.join(DECKS, "liggghts")
@@ -56,6 +66,7 @@ COMPRESS_NAMES = ["converged", "sxx", "syy", "szz", "errmax", "ke", "eel", "rati
                   "factor_z"]
 COMPRESS_SPLIT = 20005    # after the gain factors were halved, between servo steps
 RESTART_TAG = -7.3e301    # the header of a GRFLOW fix's restart data
+FLAG_MARGIN = 0.2         # test_compress_dense_packing_same: where the flags must agree
 
 
 def records(path, names):
@@ -160,10 +171,12 @@ def test_shear_same_checks(shear_cell, shear_lammps, nprocs):
     for k in ("direction", "reversals", "step_il", "time_il", "n_il", "n_event", "done",
               "event", "x_w", "gamma"):
         assert diffs[k] == 0.0, k
-    # tau, p and r_u are sums over the contacts in another order: round-off
-    # (measured 3e-16 of tau_amp on 1 rank); the threshold of
-    # test_shear_mpi.py between LAMMPS's rank counts, far below the margin
-    # of the closest check, so that no decision can differ
+    # tau, p and r_u are sums over the contacts in another order, and with
+    # LAMMPS 4Jul2026 of spheres whose masses differ by an ulp: round-off
+    # (measured on 1 rank 3e-16 of tau_amp with LAMMPS 4Feb2025, 7e-12 with
+    # 4Jul2026); the threshold of test_shear_mpi.py between LAMMPS's rank
+    # counts, far below the margin of the closest check, so that no
+    # decision can differ
     assert diffs["tau"] / amp < 1e-6 and diffs["p"] / lam[0]["p0"] < 1e-6
     assert diffs["p0"] / lam[0]["p0"] < 1e-12
     assert margin > 1e-4
@@ -274,8 +287,9 @@ def test_compress_from_gas_reaches_target(compress_from_gas):
     steps = sorted(lig)
     assert set(steps) <= set(lam)
     # up to the first check with a stress above half the target the packing
-    # is loose and the hosts agree to round-off (measured 2e-16 of the
-    # target); from there round-off grows through jamming, by 1e-3 of the
+    # is loose and the hosts agree to round-off (measured 7e-17 of the
+    # target with LAMMPS 4Feb2025, 6e-13 with 4Jul2026, whose masses differ
+    # by an ulp); from there round-off grows through jamming, by 1e-3 of the
     # box at the end (newton off instead of on does the same in LAMMPS)
     jam = next(s for s in steps if max(lam[s][k] for k in ("sxx", "syy", "szz")) > 0.5e5)
     loose = [s for s in steps if s <= jam]
@@ -337,19 +351,39 @@ def test_compress_dense_packing_same(compress_cell, compress_from_gas):
           f"{end}: relative differences " + ", ".join(f"{k} {v:.1e}" for k, v in diff.items()))
     for k in ("sxx", "syy", "szz"):
         assert abs(lam[end][k] - 1.3e5) < 0.05e5 and abs(lig[end][k] - 1.3e5) < 0.05e5
-    # the thresholds of test_compress_mpi.py (LAMMPS on other rank counts):
-    # the hosts differ in summation order only
+    # the hosts differ by round-off (the order of sums; the masses' last
+    # place with LAMMPS 4Jul2026), which the 20000 steps carry to a size
+    # that depends on the packing: the thresholds of test_compress_mpi.py,
+    # measured on 16 packings.  Here LAMMPS makes the packing, so it
+    # differs between LAMMPS versions (4Jul2026's masses change the gas
+    # stage's round-off): measured 2.2e-10 in the box and 4.4e-7 in the
+    # stresses with 4Feb2025, 1.8e-8 (ly) and 3.4e-5 (szz) with 4Jul2026.
+    # On the same packing and with the same masses the two LAMMPS versions
+    # give the same run bit for bit.
     for k in ("lx", "ly", "h", "e"):
-        assert diff[k] < 1e-8, k
+        assert diff[k] < DENSE_BOX_REL, k
     for k in ("sxx", "syy", "szz"):
-        assert diff[k] < 1e-5, k
+        assert diff[k] < DENSE_STRESS_REL, k
     # the convergence flag: the test of grflow_servo.h on LIGGGHTS's values,
-    # and LAMMPS's flag wherever round-off cannot tip it
+    # and LAMMPS's flag wherever round-off cannot tip it, where the error and
+    # the kinetic energy ratio are farther than FLAG_MARGIN of their bounds
+    # from them.  At any step of the dense stage round-off moves them by up
+    # to 3.2e-2 of tol and 1.4e-2 of ke_ratio (LIGGGHTS against LAMMPS:
+    # 1.3e-2 and 4.5e-3), kn changed by 1e-15 to 1e-5 by up to 7.8e-2 and
+    # 8.8e-2 (bench/dense_roundoff.py, 16 packings); FLAG_MARGIN is over
+    # twice the largest.  (At 1e-4, LAMMPS 4Jul2026's packing tipped the flag
+    # at step 18300: ratio 9.96e-4 in LIGGGHTS, 1.0006e-3 in LAMMPS.)  Near
+    # convergence the ratio stays within it, so the steps compared (157 of
+    # 200 with LAMMPS 4Feb2025, 159 with 4Jul2026) are unconverged ones.
     for s in lig:
         ratio, err = lig[s]["ratio"], lig[s]["errmax"]
         assert lig[s]["converged"] == float(err <= 0.01 and ratio <= 1.0e-3), s
-        if abs(ratio / 1.0e-3 - 1.0) > 1e-4 and abs(err / 0.01 - 1.0) > 1e-4:
-            assert lig[s]["converged"] == lam[s]["converged"], s
+    far = [s for s in lig if abs(lig[s]["ratio"] / 1.0e-3 - 1.0) > FLAG_MARGIN
+           and abs(lig[s]["errmax"] / 0.01 - 1.0) > FLAG_MARGIN]
+    print(f"[ measured ] compress, dense packing: flags compared at {len(far)} of {len(lig)} "
+          f"checks, {sum(lig[s]['converged'] for s in far):g} of them converged")
+    for s in far:
+        assert lig[s]["converged"] == lam[s]["converged"], s
 
 
 def test_compress_damaged_restart(compress_cell, compress_from_gas):
