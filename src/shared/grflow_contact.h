@@ -301,7 +301,6 @@ namespace GRFLOW {
     out.torque_j[2] = -g.arm_j * nxft[2] - tc[2];
   }
 
-
   /* ----------------------------------------------------------------------
      the arm of a contact: distance from the centre of a sphere of radius
      rad to the contact point, the middle of the overlap delta
