@@ -31,8 +31,13 @@
 #include <cmath>
 
 // the kernel is called once per neighbor pair: it must be inlined into the
-// pair loop (GCC otherwise keeps contact_forces() out of line, ~2x slower)
-#if defined(__GNUC__) || defined(__clang__)
+// pair loop (GCC otherwise keeps contact_forces() out of line, ~2x slower).
+// Under CUDA and HIP (the KOKKOS package on a GPU) the scalar kernel is
+// callable from device code too; the two-lane path stays host code
+// (GRFLOW_VEC2_INLINE), so device code takes contact_forces_reference().
+#if defined(__CUDACC__) || defined(__HIPCC__)
+#define GRFLOW_INLINE __host__ __device__ __forceinline__
+#elif defined(__GNUC__) || defined(__clang__)
 #define GRFLOW_INLINE inline __attribute__((always_inline))
 #else
 #define GRFLOW_INLINE inline
@@ -303,21 +308,26 @@ namespace GRFLOW {
 
 #if (defined(__GNUC__) || defined(__clang__)) && !defined(GRFLOW_NO_VEC2)
 #define GRFLOW_HAVE_VEC2 1
+#if defined(__CUDACC__) || defined(__HIPCC__)
+#define GRFLOW_VEC2_INLINE inline __attribute__((always_inline))    // host only
+#else
+#define GRFLOW_VEC2_INLINE GRFLOW_INLINE
+#endif
 
   typedef double vec2 __attribute__((vector_size(16)));
   typedef long long mask2 __attribute__((vector_size(16)));
 
-  static GRFLOW_INLINE vec2 select2(mask2 m, vec2 a, vec2 b)
+  static GRFLOW_VEC2_INLINE vec2 select2(mask2 m, vec2 a, vec2 b)
   {
     return (vec2) (((mask2) a & m) | ((mask2) b & ~m));
   }
 
-  static GRFLOW_INLINE bool any2(mask2 m)
+  static GRFLOW_VEC2_INLINE bool any2(mask2 m)
   {
     return (m[0] | m[1]) != 0;
   }
 
-  static GRFLOW_INLINE vec2 sqrt2(vec2 a)
+  static GRFLOW_VEC2_INLINE vec2 sqrt2(vec2 a)
   {
 #if defined(__SSE2__)
     return __builtin_ia32_sqrtpd(a);    // one sqrtpd (x86-64)
@@ -329,7 +339,7 @@ namespace GRFLOW {
   // rotate both springs into the plane normal to n (rotate_into_plane() per
   // lane); a lane with a large turn takes the scalar path
 
-  static GRFLOW_INLINE void rotate_into_plane2(vec2 *x, const double *n)
+  static GRFLOW_VEC2_INLINE void rotate_into_plane2(vec2 *x, const double *n)
   {
     const vec2 p = x[0] * n[0] + x[1] * n[1] + x[2] * n[2];
     const vec2 len2 = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
@@ -350,8 +360,8 @@ namespace GRFLOW {
 
   // spring_dashpot_capped() on both lanes: k, c, cap per lane; f gets the forces
 
-  static GRFLOW_INLINE void spring_dashpot_capped2(vec2 k, vec2 c, vec2 cap, const vec2 *v,
-                                                   double dt, bool update, vec2 *x, vec2 *f)
+  static GRFLOW_VEC2_INLINE void spring_dashpot_capped2(vec2 k, vec2 c, vec2 cap, const vec2 *v,
+                                                        double dt, bool update, vec2 *x, vec2 *f)
   {
     if (update)
       for (int d = 0; d < 3; d++) x[d] += v[d] * dt;
@@ -376,9 +386,10 @@ namespace GRFLOW {
      and rolling springs in two lanes
   ------------------------------------------------------------------------- */
 
-  static GRFLOW_INLINE void contact_forces(const ContactCoeffs &c, const ContactGeometry &g,
-                                           const double *vrel, const double *wi, const double *wj,
-                                           double dt, bool update, double *hist, ContactForces &out)
+  static GRFLOW_VEC2_INLINE void contact_forces(const ContactCoeffs &c, const ContactGeometry &g,
+                                                const double *vrel, const double *wi,
+                                                const double *wj, double dt, bool update,
+                                                double *hist, ContactForces &out)
   {
     const double *n = g.n;
 
