@@ -35,6 +35,7 @@
 
 #include "atom_kokkos.h"
 #include "atom_masks.h"
+#include "compute.h"
 #include "error.h"
 #include "force.h"
 #include "grflow_contact.h"
@@ -125,6 +126,15 @@ template <class DeviceType> void PairGranularGRFLOWKokkos<DeviceType>::init_styl
                "Pair style granular/grflow/kk requires newton pair off (its contact history "
                "sends nothing back from ghost atoms): use 'newton off' or the KOKKOS package "
                "option 'newton off' (-pk kokkos newton off)");
+
+  // compute grflow/network reads this pair style's neighbor list on the
+  // host, which a KOKKOS list does not fill: it would count no contacts
+  for (auto *icompute : modify->get_compute_by_style("^grflow/network"))
+    error->all(FLERR,
+               "Compute {} (grflow/network) does not work with pair style granular/grflow/kk "
+               "yet (it reads the pair style's neighbor list on the host): use "
+               "granular/grflow for runs with it",
+               icompute->id);
 
   // on first init, the history fix replaces the FixDummy of the
   // constructor (keeping its place in the fix list).  Not fix
