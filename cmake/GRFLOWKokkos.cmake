@@ -50,6 +50,8 @@ macro(grflow_kokkos_packages)
   endif()
   # found here too, so that LAMMPS's configure sees its devices from the
   # start (Kokkos_ENABLE_CUDA, Kokkos_ENABLE_OPENMP: compiler flags, checks)
+  # (LAMMPS sets C++17 without extensions, as an installed Kokkos wants)
+  set(CMAKE_CXX_EXTENSIONS OFF CACHE BOOL "Use compiler extensions")
   find_package(Kokkos 4.5.01 REQUIRED CONFIG)
   foreach(pkg GRANULAR GRFLOW KOKKOS)
     set(PKG_${pkg} ON CACHE BOOL "Build the ${pkg} package")

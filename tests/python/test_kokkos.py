@@ -26,7 +26,9 @@ reason:
 - the restitution coefficient of a head-on collision against its closed
   forms, under both normal force laws;
 - the clear errors of unsupported settings (newton on, full neighbor
-  lists) and of the plain style's checks.
+  lists) and of the plain style's checks;
+- bench/kokkos_bench.sh, the benchmark of scripts/gpu-check.sh, at a
+  small size.
 
 Environment: LMP_KOKKOS (lmp with GRFLOW and KOKKOS), LMP (lmp with
 granular/grflow; default LMP_KOKKOS, whose plain styles are those of the
@@ -37,6 +39,7 @@ newton off neigh half"), GRFLOW_KOKKOS_THREADS (threads of the threaded
 runs, default 2; 0 leaves them out, e.g. on a GPU), MPIEXEC,
 GRFLOW_TEST_DECKS.
 """
+import json
 import math
 import os
 import shlex
@@ -589,6 +592,29 @@ def test_head_on_restitution(tmp_path, law):
     # the two laws differ by 0.16
     assert abs(e - e_ana) < 1e-3 * e_ana
     assert e_c - e_u > 0.1
+
+
+# ---------------------------------------------------------------------------
+# the benchmark of the GPU check, at a small size on this backend
+
+def test_benchmark_script(packing, tmp_path):
+    """bench/kokkos_bench.sh (scripts/gpu-check.sh bench runs it on a GPU):
+    both styles at 1 and 2 tiles of the packing; its table and json"""
+    work, data = packing
+    bench = Path(__file__).resolve().parents[2] / "bench" / "kokkos_bench.sh"
+    env = dict(os.environ, TILES="1 2", NSTEPS="100", NWARM="20", KK=" ".join(KK_ARGS))
+    proc = subprocess.run(["bash", str(bench), LMP_KOKKOS, str(data), str(tmp_path / "b")],
+                          capture_output=True, text=True, env=env, timeout=900)
+    assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
+    res = json.loads((tmp_path / "b" / "results.json").read_text())
+    runs = {(r["style"], r["n"]): r for r in res["runs"]}
+    assert set(runs) == {("grflow", 1), ("hooke", 1), ("grflow", 2), ("hooke", 2)}
+    for (style, n), r in runs.items():
+        assert r["atoms"] == 343 * n ** 3 and r["steps"] == 100 and r["neighbors"] > 0
+        assert r["ns_per_pair_step"] > 0.0
+    assert set(res["grflow_over_hooke"]) == {"343", "2744"}
+    print("[ measured ] benchmark at 343 and 2744 spheres (timings mean nothing here): "
+          + ", ".join(f"{k}: {v:.2f}" for k, v in res["grflow_over_hooke"].items()))
 
 
 # ---------------------------------------------------------------------------
