@@ -282,9 +282,13 @@ def reference(packing):
 # (ranks, sort interval, threads, package kokkos options): owners change by
 # sorting (on the host, or on the device with sort device), by ranks (the
 # exchange on the host, or on the device with comm device), with threads
-# the forces on j are added atomically
+# the forces on j are added atomically.  Measured on the OpenMP backend:
+# up to 6.9e-10 in x and 1.2e-6 in omega.
 VARIANTS = [(1, 1000, None, ""), (1, 10, None, ""), (1, 10, None, "sort device"),
-            (2, 1000, None, ""), (2, 10, None, "comm device sort device")]
+            (2, 1000, None, ""), (2, 10, None, "comm device sort device"),
+            # 3 ranks in a row: a rank receives from both sides in one
+            # exchange, the second message of unpack_exchange_kokkos()
+            (3, 10, None, "comm device sort device")]
 if THREADS > 1:
     VARIANTS += [(1, 10, THREADS, ""), (2, 1000, THREADS, "comm device")]
 
