@@ -652,3 +652,17 @@ def test_unsupported_settings_are_errors(tmp_path, newton, comm, extra, message)
     text = proc.stdout + proc.stderr
     assert proc.returncode != 0, text[-2000:]
     assert message in text, text[-2000:]
+
+
+def test_same_position_is_an_error(tmp_path):
+    """a third sphere exactly on the first: no contact normal; the KOKKOS
+    loop skips the pair and the host names the atoms"""
+    deck = tmp_path / "in.same"
+    deck.write_text(SMALL.format(newton="newton off", comm="comm_modify vel yes").replace(
+        "pair_style", "create_atoms 1 single 0.005 0.005 0.005\n"
+        "set atom 3 diameter 1.0e-3 density 2650\npair_style", 1))
+    proc = run(["-in", str(deck)], tmp_path, kokkos=True, check=False)
+    text = proc.stdout + proc.stderr
+    assert proc.returncode != 0, text[-2000:]
+    assert ("atoms 1 and 3 are at the same position" in text
+            or "atoms 3 and 1 are at the same position" in text), text[-2000:]
