@@ -32,6 +32,9 @@
 #   scripts/gpu-check.sh test       then   scripts/gpu-check.sh bench
 # with build-gpu-carry carried.  The logs and results are copied to $OUT
 # when it is set (the device machine's folder that comes back).
+# Environment: GRFLOW_KOKKOS_ARCH (build), GRFLOW_KOKKOS_ARGS (test; default
+# "-k on g 1 -sf kk -pk kokkos newton off neigh half gpu/aware off"), KK,
+# TILES, NSTEPS, NWARM, NSTEPS_<n> (bench; bench/kokkos_bench.sh).
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd -P)
 phase=${1:?usage: gpu-check.sh pack KOKKOS [CARRY] | build|test|bench|all [CARRY]}
@@ -112,15 +115,19 @@ build)
 
 test)
   [ -x "$lmp" ] || { echo "ERROR: no $lmp: run gpu-check.sh build first" >&2; exit 1; }
-  python3 -c "import pytest, numpy" \
-    || { echo "ERROR: the tests need python3 with pytest and numpy" >&2; exit 1; }
+  py=
+  for candidate in python3 /usr/bin/python3; do
+    if "$candidate" -c "import pytest, numpy" 2> /dev/null; then py=$candidate; break; fi
+  done
+  [ -n "$py" ] || { echo "ERROR: the tests need a python3 with pytest and numpy" >&2; exit 1; }
   mkdir -p "$work/tests"
   start=$SECONDS
   set +e
-  (cd "$work/tests" && LMP_KOKKOS=$lmp LMP=$lmp OMP_NUM_THREADS=1 GRFLOW_KOKKOS_THREADS=0 \
-     GRFLOW_KOKKOS_ARGS="-k on g 1 -sf kk -pk kokkos newton off neigh half gpu/aware off" \
+  (cd "$work/tests" && LMP_KOKKOS=$lmp LMP=$lmp OMP_NUM_THREADS=1 \
+     GRFLOW_KOKKOS_THREADS=${GRFLOW_KOKKOS_THREADS:-0} \
+     GRFLOW_KOKKOS_ARGS=${GRFLOW_KOKKOS_ARGS:-"-k on g 1 -sf kk -pk kokkos newton off neigh half gpu/aware off"} \
      GRFLOW_TEST_DECKS=$top/tests/decks MPIEXEC=${MPIEXEC:-mpirun} \
-     python3 -m pytest -q -s -p no:cacheprovider --junitxml="$work/tests/junit.xml" \
+     "$py" -m pytest -q -s -p no:cacheprovider --junitxml="$work/tests/junit.xml" \
        "$top/tests/python/test_kokkos.py" 2>&1 | tee "$work/tests/pytest.log")
   rc=${PIPESTATUS[0]}
   set -e
