@@ -610,7 +610,7 @@ int FixNeighHistoryGRFLOWKokkos<DeviceType>::pack_exchange_kokkos(const int &nse
         Kokkos::RangePolicy<DeviceType, TagFixNeighHistoryGRFLOWPackExchange>(0, nsend), *this);
   copymode = 0;
 
-  k_buf.template modify<DeviceType>();
+  // (k_buf is not marked: CommKokkos sends its device data as they are)
   k_npartner.template modify<DeviceType>();
   k_partner.template modify<DeviceType>();
   k_valuepartner.template modify<DeviceType>();
