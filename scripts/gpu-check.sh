@@ -10,8 +10,8 @@
 #   scripts/gpu-check.sh build|test|bench|all [CARRY]   on the GPU machine
 #
 # pack   makes CARRY (default build-gpu-carry/carry.tar.xz, git-ignored): the
-#        LAMMPS 4Feb2025 source that the build needs (src/ without the
-#        packages it does not use, cmake/; Debian's source package, fetched
+#        LAMMPS 4Feb2025 source that the build needs (src/ and src/fmt/, the
+#        packages GRANULAR and KOKKOS, cmake/; Debian's source package, fetched
 #        by scripts/fetch-lammps-source.sh), the Kokkos source KOKKOS
 #        (kokkos-4.5.01.tar.xz; kokkos/patches make it build with CUDA 13),
 #        and the 8000-sphere packing of bench/in.prep_packing, made here
@@ -56,10 +56,11 @@ pack)
   stage=$(dirname "$carry")/pack
   rm -rf "$stage"
   mkdir -p "$stage/lammps-4Feb2025/src" "$stage/lammps-4Feb2025/doc"
-  # src/: the top level and the packages of the KOKKOS build (GRANULAR,
-  # KOKKOS; OPENMP is staged empty but for GRFLOW's files)
+  # src/: the top level with its fmt/ (the core) and the packages of the
+  # KOKKOS build (GRANULAR, KOKKOS; OPENMP is staged empty but for GRFLOW's
+  # files)
   find "$tree/src" -maxdepth 1 -type f -exec cp -p {} "$stage/lammps-4Feb2025/src/" \;
-  cp -rp "$tree/src/KOKKOS" "$tree/src/GRANULAR" "$stage/lammps-4Feb2025/src/"
+  cp -rp "$tree/src/fmt" "$tree/src/KOKKOS" "$tree/src/GRANULAR" "$stage/lammps-4Feb2025/src/"
   cp -rp "$tree/cmake" "$stage/lammps-4Feb2025/"
   cp -p "$tree/doc/lammps.1" "$stage/lammps-4Feb2025/doc/"
   cp -p "$kokkos" "$stage/kokkos.tar.${kokkos##*.tar.}"
@@ -94,6 +95,8 @@ build)
     tar -C "$work/src" -xf "$carry"
     (cd "$work/src" && sha256sum --quiet -c MANIFEST) || { echo "ERROR: $carry is damaged" >&2; exit 1; }
     cp "$carry" "$work/carry.tar"
+    # another LAMMPS tree: staged afresh (the staging keys on its path only)
+    rm -rf "$work/lammps-cuda/lammps-staged"
   fi
   arch=${GRFLOW_KOKKOS_ARCH:-}
   if [ -z "$arch" ]; then
