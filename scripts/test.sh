@@ -31,6 +31,12 @@ fi
 kokkos_opt=()
 if [ -n "${GRFLOW_KOKKOS_SOURCE:-}" ]; then
   kbuild=${GRFLOW_KOKKOS_BUILD_DIR:-$top/build-kokkos-openmp}
+  # ccache with paths relative to the repository: the two LAMMPS builds
+  # stage the same tree at the same relative place, so the default build
+  # can take the KOKKOS build's objects of the files that do not depend on
+  # KOKKOS (most of the LAMMPS core and GRANULAR; a file that includes
+  # accelerator_kokkos.h differs)
+  export CCACHE_BASEDIR="$top"
   log=$kbuild.log
   echo "building LAMMPS with GRFLOW and KOKKOS (OpenMP) from $GRFLOW_KOKKOS_SOURCE (log: $log)"
   GRFLOW_KOKKOS_STYLES=${GRFLOW_KOKKOS_STYLES-minimal} \
