@@ -1,7 +1,9 @@
 # Add the GRFLOW package to a LAMMPS source tree, the way a package is added
 # to one's own LAMMPS: src/GRFLOW (GRFLOW's LAMMPS classes and the host-free
 # sources it shares with LIGGGHTS, src/shared), its OPENMP variants in src/OPENMP,
-# and GRFLOW in the package lists of cmake/CMakeLists.txt (for
+# its KOKKOS variants in src/KOKKOS (built with -D PKG_KOKKOS=on by CMake;
+# the make build's KOKKOS/Install.sh lists its files by name and does not
+# install them), and GRFLOW in the package lists of cmake/CMakeLists.txt (for
 # -D PKG_GRFLOW=on) and src/Makefile (for make package-status and friends;
 # make yes-grflow works without it).  Unlike GRFLOW's own build, this writes
 # into the tree it is given.  Run again after updating GRFLOW, it replaces
@@ -35,6 +37,10 @@ file(GLOB shared_files ${top}/src/shared/*)
 file(COPY ${shared_files} DESTINATION ${tree}/src/GRFLOW)
 file(GLOB omp_files ${top}/src/OPENMP/*)
 file(COPY ${omp_files} DESTINATION ${tree}/src/OPENMP)
+if(IS_DIRECTORY ${tree}/src/KOKKOS)
+  file(GLOB kk_files ${top}/src/KOKKOS/*)
+  file(COPY ${kk_files} DESTINATION ${tree}/src/KOKKOS)
+endif()
 
 # cmake/CMakeLists.txt: GRFLOW among the standard packages
 file(READ ${tree}/cmake/CMakeLists.txt cml)
@@ -55,6 +61,7 @@ endif()
 
 message(STATUS "GRFLOW added to ${tree}:
   CMake:  cmake -S ${tree}/cmake -B build -D PKG_GRFLOW=on [-D PKG_OPENMP=on]
+          [-D PKG_KOKKOS=on and your Kokkos settings: granular/grflow/kk]
   make:   cd ${tree}/src && make yes-grflow [yes-openmp] && make mpi
           (yes-openmp after yes-grflow, so that OPENMP installs granular/grflow/omp;
            after updating GRFLOW: run this again, then make package-update)")

@@ -7,12 +7,21 @@
 # host-free sources shared with LIGGGHTS (src/shared); its
 # src/OPENMP is a real directory too, of links to the original OPENMP entries
 # plus our accelerator variants (src/OPENMP/*_omp.*, found there by the OPENMP
-# package's RegisterStylesExt as for any other package); its cmake/ is a copy
+# package's RegisterStylesExt as for any other package); src/KOKKOS likewise,
+# with our KOKKOS variants (src/KOKKOS/*_kokkos*); its cmake/ is a copy
 # whose package list names GRFLOW.  bench/ and potentials/
 # are staged empty so "install" does not copy data GRFLOW never uses.
 #
+# GRFLOW_KOKKOS_STAGE_STYLES (optional): a list of the LAMMPS KOKKOS styles to
+# stage, by the name of the plain style's header without .h (e.g.
+# fix_nve_sphere); the KOKKOS package's own files (kokkos.cpp, atom_kokkos,
+# comm_kokkos, npair_kokkos, ...) and GRFLOW's are always staged.  A style
+# not staged is not compiled, and runs as its plain host version.  Empty
+# (the default): every style, as a LAMMPS tree has them.
+#
 # In:  LAMMPS_SOURCE_DIR (original tree), GRFLOW_PACKAGE_DIR (our src/GRFLOW),
-#      GRFLOW_SHARED_DIR (our src/shared), GRFLOW_OPENMP_DIR (our src/OPENMP)
+#      GRFLOW_SHARED_DIR (our src/shared), GRFLOW_OPENMP_DIR (our src/OPENMP),
+#      GRFLOW_KOKKOS_DIR (our src/KOKKOS), GRFLOW_KOKKOS_STAGE_STYLES
 # Out: GRFLOW_STAGED_LAMMPS (staged tree root)
 
 # A LAMMPS source tree of a version GRFLOW supports, or a fatal error.  The
@@ -56,13 +65,19 @@ function(grflow_stage_lammps)
       message(FATAL_ERROR "${orig}/src/OPENMP already has ${e}; pass a clean LAMMPS tree")
     endif()
   endforeach()
+  file(GLOB kk_files RELATIVE ${GRFLOW_KOKKOS_DIR} ${GRFLOW_KOKKOS_DIR}/*)
+  foreach(e ${kk_files})
+    if(EXISTS ${orig}/src/KOKKOS/${e})
+      message(FATAL_ERROR "${orig}/src/KOKKOS already has ${e}; pass a clean LAMMPS tree")
+    endif()
+  endforeach()
 
   # rebuild the link farm when the original tree changes location or the
   # set of our files changes
   file(GLOB pkg_files RELATIVE ${GRFLOW_PACKAGE_DIR} ${GRFLOW_PACKAGE_DIR}/*)
   file(GLOB shared_files RELATIVE ${GRFLOW_SHARED_DIR} ${GRFLOW_SHARED_DIR}/*)
   set(stamp ${stage}/.grflow-staged-from)
-  set(stamp_text "${orig}\nOPENMP: ${omp_files}\nGRFLOW: ${pkg_files}\nshared: ${shared_files}")
+  set(stamp_text "${orig}\nOPENMP: ${omp_files}\nKOKKOS: ${kk_files}\nGRFLOW: ${pkg_files}\nshared: ${shared_files}\nKOKKOS styles: ${GRFLOW_KOKKOS_STAGE_STYLES}")
   set(restage TRUE)
   if(EXISTS ${stamp})
     file(READ ${stamp} previous)
@@ -80,7 +95,7 @@ function(grflow_stage_lammps)
     endforeach()
     file(CREATE_LINK ${orig}/doc/lammps.1 ${stage}/doc/lammps.1 SYMBOLIC)
     file(GLOB entries RELATIVE ${orig}/src ${orig}/src/*)
-    list(REMOVE_ITEM entries OPENMP)
+    list(REMOVE_ITEM entries OPENMP KOKKOS)
     foreach(e ${entries})
       file(CREATE_LINK ${orig}/src/${e} ${stage}/src/${e} SYMBOLIC)
     endforeach()
@@ -98,6 +113,23 @@ function(grflow_stage_lammps)
     endforeach()
     foreach(e ${omp_files})
       file(CREATE_LINK ${GRFLOW_OPENMP_DIR}/${e} ${stage}/src/OPENMP/${e} SYMBOLIC)
+    endforeach()
+    file(MAKE_DIRECTORY ${stage}/src/KOKKOS)
+    file(GLOB entries RELATIVE ${orig}/src/KOKKOS ${orig}/src/KOKKOS/*)
+    foreach(e ${entries})
+      if(GRFLOW_KOKKOS_STAGE_STYLES AND e MATCHES "^(.*)_kokkos\\.h$")
+        # a style header of a style not asked for is left out (its .cpp is
+        # then never registered, so never compiled)
+        set(base ${CMAKE_MATCH_1})
+        file(STRINGS ${orig}/src/KOKKOS/${e} is_style REGEX "Style\\(" LIMIT_COUNT 1)
+        if(is_style AND NOT base IN_LIST GRFLOW_KOKKOS_STAGE_STYLES)
+          continue()
+        endif()
+      endif()
+      file(CREATE_LINK ${orig}/src/KOKKOS/${e} ${stage}/src/KOKKOS/${e} SYMBOLIC)
+    endforeach()
+    foreach(e ${kk_files})
+      file(CREATE_LINK ${GRFLOW_KOKKOS_DIR}/${e} ${stage}/src/KOKKOS/${e} SYMBOLIC)
     endforeach()
     file(WRITE ${stamp} "${stamp_text}")
   endif()

@@ -30,8 +30,12 @@
 #include <cmath>
 
 // the kernel is called once per neighbor pair: it must be inlined into the
-// pair loop (GCC otherwise keeps contact_forces() out of line, ~2x slower)
-#if defined(__GNUC__) || defined(__clang__)
+// pair loop (GCC otherwise keeps contact_forces() out of line, ~2x slower).
+// Under CUDA and HIP (the KOKKOS package on a GPU) it is callable from
+// device code too.
+#if defined(__CUDACC__) || defined(__HIPCC__)
+#define GRFLOW_INLINE __host__ __device__ __forceinline__
+#elif defined(__GNUC__) || defined(__clang__)
 #define GRFLOW_INLINE inline __attribute__((always_inline))
 #else
 #define GRFLOW_INLINE inline

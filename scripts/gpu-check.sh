@@ -1,0 +1,165 @@
+#!/usr/bin/env bash
+# The GPU check of granular/grflow/kk, for one loan of a GPU machine (one
+# NVIDIA H100 or H200, CUDA 13, no internet, at most 10 minutes a command):
+# build LAMMPS with GRFLOW and KOKKOS for CUDA from a carried tarball, run
+# the KOKKOS tests on the GPU, and time granular/grflow/kk against
+# gran/hooke/history/kk on the jammed packing tiled to 8000, 64000 and
+# 512000 spheres.
+#
+#   scripts/gpu-check.sh pack KOKKOS [CARRY]      here, before the loan
+#   scripts/gpu-check.sh build|test|bench|all [CARRY]   on the GPU machine
+#
+# pack   makes CARRY (default build-gpu-carry/carry.tar.xz, git-ignored): the
+#        LAMMPS 4Feb2025 source that the build needs (src/ and src/fmt/, the
+#        packages GRANULAR and KOKKOS, cmake/; Debian's source package, fetched
+#        by scripts/fetch-lammps-source.sh), the Kokkos source KOKKOS
+#        (kokkos-4.5.01.tar.xz; kokkos/patches make it build with CUDA 13),
+#        and the 8000-sphere packing of bench/in.prep_packing, made here
+#        with an lmp given as LMP (default build-kokkos-openmp/lmp) unless
+#        PACKING names one
+# build  unpacks CARRY into build-gpu/, builds Kokkos (CUDA, the GPU's
+#        architecture from nvidia-smi, else GRFLOW_KOKKOS_ARCH or HOPPER90)
+#        and LAMMPS with the minimal set of LAMMPS KOKKOS styles
+#        (scripts/setup-kokkos.sh cuda); a second call continues a build cut
+#        short
+# test   tests/python/test_kokkos.py on the GPU (pytest and numpy needed),
+#        against the plain styles of the same lmp
+# bench  bench/kokkos_bench.sh, TILES="1 2 4" (8000, 64000, 512000 spheres)
+# all    build, test and bench
+#
+# On the device machine (run from the repository root there):
+#   scripts/gpu-check.sh build      (about 6-8 minutes on 16 cores)
+#   scripts/gpu-check.sh test       then   scripts/gpu-check.sh bench
+# with build-gpu-carry carried.  The logs and results are copied to $OUT
+# when it is set (the device machine's folder that comes back).
+# Environment: GRFLOW_KOKKOS_ARCH (build), GRFLOW_KOKKOS_ARGS (test; default
+# "-k on g 1 -sf kk -pk kokkos newton off neigh half gpu/aware off"), KK,
+# TILES, NSTEPS, NWARM, NSTEPS_<n> (bench; bench/kokkos_bench.sh).
+set -euo pipefail
+top=$(cd "$(dirname "$0")/.." && pwd -P)
+phase=${1:?usage: gpu-check.sh pack KOKKOS [CARRY] | build|test|bench|all [CARRY]}
+shift
+work=$top/build-gpu
+lmp=$work/lammps-cuda/lmp
+keep() {    # copy results to $OUT (the device machine's returned folder)
+  [ -n "${OUT:-}" ] || return 0
+  mkdir -p "$OUT"
+  cp -r "$@" "$OUT/" 2> /dev/null || true
+}
+
+case "$phase" in
+pack)
+  kokkos=${1:?usage: gpu-check.sh pack KOKKOS [CARRY]}
+  carry=$(realpath -m "${2:-$top/build-gpu-carry/carry.tar.xz}")
+  [ -f "$kokkos" ] || { echo "ERROR: no Kokkos tarball $kokkos" >&2; exit 1; }
+  tree=$(bash "$top/scripts/fetch-lammps-source.sh" "${GRFLOW_CACHE_DIR:-$HOME/.cache/grflow}")
+  stage=$(dirname "$carry")/pack
+  rm -rf "$stage"
+  mkdir -p "$stage/lammps-4Feb2025/src" "$stage/lammps-4Feb2025/doc"
+  # src/: the top level with its fmt/ (the core) and the packages of the
+  # KOKKOS build (GRANULAR, KOKKOS; OPENMP is staged empty but for GRFLOW's
+  # files)
+  find "$tree/src" -maxdepth 1 -type f -exec cp -p {} "$stage/lammps-4Feb2025/src/" \;
+  cp -rp "$tree/src/fmt" "$tree/src/KOKKOS" "$tree/src/GRANULAR" "$stage/lammps-4Feb2025/src/"
+  cp -rp "$tree/cmake" "$stage/lammps-4Feb2025/"
+  cp -p "$tree/doc/lammps.1" "$stage/lammps-4Feb2025/doc/"
+  cp -p "$kokkos" "$stage/kokkos.tar.${kokkos##*.tar.}"
+  packing=${PACKING:-}
+  if [ -z "$packing" ]; then
+    plmp=${LMP:-$top/build-kokkos-openmp/lmp}
+    [ -x "$plmp" ] || { echo "ERROR: no lmp $plmp to make the packing with (LMP=...)" >&2; exit 1; }
+    mkdir -p "$stage/prep"
+    echo "making the 8000-sphere packing with $plmp (bench/in.prep_packing; minutes)"
+    (cd "$stage/prep" && "$plmp" -nocite -log log.prep -screen none \
+       -in "$top/bench/in.prep_packing" -var outdir "$stage/prep") \
+      || { tail -n 20 "$stage/prep/log.prep"; echo "ERROR: the packing failed" >&2; exit 1; }
+    grep "^prepared packing" "$stage/prep/log.prep"
+    packing=$stage/prep/packing.data
+  fi
+  cp -p "$packing" "$stage/packing.data"
+  rm -rf "$stage/prep"
+  (cd "$stage" && find . -type f ! -name MANIFEST -print0 | LC_ALL=C sort -z | xargs -0 sha256sum > MANIFEST)
+  tar -C "$stage" -cJf "$carry.tmp" .
+  mv "$carry.tmp" "$carry"
+  rm -rf "$stage"
+  echo "carry: $carry ($(du -h "$carry" | cut -f1)); carry the folder $(realpath --relative-to="$top" "$(dirname "$carry")")"
+  ;;
+
+build)
+  carry=$(realpath "${1:-$top/build-gpu-carry/carry.tar.xz}")
+  start=$SECONDS
+  mkdir -p "$work"
+  if [ ! -f "$work/src/MANIFEST" ] || ! cmp -s "$carry" "$work/carry.tar"; then
+    rm -rf "$work/src"
+    mkdir -p "$work/src"
+    tar -C "$work/src" -xf "$carry"
+    (cd "$work/src" && sha256sum --quiet -c MANIFEST) || { echo "ERROR: $carry is damaged" >&2; exit 1; }
+    cp "$carry" "$work/carry.tar"
+    # another LAMMPS tree: staged afresh (the staging keys on its path only)
+    rm -rf "$work/lammps-cuda/lammps-staged"
+  fi
+  arch=${GRFLOW_KOKKOS_ARCH:-}
+  if [ -z "$arch" ]; then
+    cap=$(nvidia-smi --query-gpu=compute_cap --format=csv,noheader 2> /dev/null | head -n 1 || true)
+    case "$cap" in
+      9.0) arch=HOPPER90 ;; 8.0) arch=AMPERE80 ;; 8.6) arch=AMPERE86 ;; 8.9) arch=ADA89 ;;
+      7.5) arch=TURING75 ;; *) arch=HOPPER90 ;;
+    esac
+    echo "GPU compute capability ${cap:-unknown}: Kokkos architecture $arch"
+  fi
+  nvidia-smi -L || echo "(no nvidia-smi: building without a GPU here)"
+  GRFLOW_KOKKOS_ARCH=$arch GRFLOW_KOKKOS_STYLES=${GRFLOW_KOKKOS_STYLES-minimal} \
+    bash "$top/scripts/setup-kokkos.sh" cuda "$(ls "$work"/src/kokkos.tar.*)" "$work/lammps-cuda" \
+      -- -D "LAMMPS_SOURCE_DIR=$work/src/lammps-4Feb2025" 2>&1 | tee "$work/build.log"
+  [ "${PIPESTATUS[0]}" = 0 ] || { keep "$work/build.log"; exit 1; }
+  echo "gpu-check build: $(( SECONDS - start )) s"
+  keep "$work/build.log"
+  ;;
+
+test)
+  [ -x "$lmp" ] || { echo "ERROR: no $lmp: run gpu-check.sh build first" >&2; exit 1; }
+  py=
+  for candidate in python3 /usr/bin/python3; do
+    if "$candidate" -c "import pytest, numpy" 2> /dev/null; then py=$candidate; break; fi
+  done
+  [ -n "$py" ] || { echo "ERROR: the tests need a python3 with pytest and numpy" >&2; exit 1; }
+  mkdir -p "$work/tests"
+  start=$SECONDS
+  set +e
+  (cd "$work/tests" && LMP_KOKKOS=$lmp LMP=$lmp OMP_NUM_THREADS=1 \
+     GRFLOW_KOKKOS_THREADS=${GRFLOW_KOKKOS_THREADS:-0} \
+     GRFLOW_KOKKOS_ARGS=${GRFLOW_KOKKOS_ARGS:-"-k on g 1 -sf kk -pk kokkos newton off neigh half gpu/aware off"} \
+     GRFLOW_TEST_DECKS=$top/tests/decks MPIEXEC=${MPIEXEC:-mpirun} \
+     "$py" -m pytest -q -s -p no:cacheprovider --junitxml="$work/tests/junit.xml" \
+       "$top/tests/python/test_kokkos.py" 2>&1 | tee "$work/tests/pytest.log")
+  rc=${PIPESTATUS[0]}
+  set -e
+  echo "gpu-check test: $(( SECONDS - start )) s, pytest status $rc"
+  keep "$work/tests/pytest.log" "$work/tests/junit.xml"
+  exit "$rc"
+  ;;
+
+bench)
+  [ -x "$lmp" ] || { echo "ERROR: no $lmp: run gpu-check.sh build first" >&2; exit 1; }
+  start=$SECONDS
+  mkdir -p "$work/bench"
+  TILES=${TILES:-1 2 4} KK=${KK:--k on g 1 -sf kk -pk kokkos newton off neigh half} \
+    NSTEPS=${NSTEPS:-2000} NWARM=${NWARM:-200} NSTEPS_4=${NSTEPS_4:-500} \
+    bash "$top/bench/kokkos_bench.sh" "$lmp" "$work/src/packing.data" "$work/bench" \
+    | tee "$work/bench/summary.txt"
+  echo "gpu-check bench: $(( SECONDS - start )) s"
+  nvidia-smi > "$work/bench/nvidia-smi.txt" 2>&1 || true
+  keep "$work/bench"
+  ;;
+
+all)
+  "$0" build "$@"
+  "$0" test
+  "$0" bench
+  ;;
+
+*)
+  echo "ERROR: unknown phase $phase: pack, build, test, bench or all" >&2
+  exit 1
+  ;;
+esac
