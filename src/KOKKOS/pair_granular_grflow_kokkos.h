@@ -26,6 +26,7 @@ PairStyle(granular/grflow/kk/host,PairGranularGRFLOWKokkos<LMPHostType>);
 #ifndef LMP_PAIR_GRANULAR_GRFLOW_KOKKOS_H
 #define LMP_PAIR_GRANULAR_GRFLOW_KOKKOS_H
 
+#include "grflow_contact_coeffs.h"
 #include "kokkos_type.h"
 #include "pair_granular_grflow.h"
 
