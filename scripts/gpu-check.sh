@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# The GPU check of granular/grflow/kk, for one loan of a GPU machine (one
-# NVIDIA H100 or H200, CUDA 13, no internet, at most 10 minutes a command):
-# build LAMMPS with GRFLOW and KOKKOS for CUDA from a carried tarball, run
-# the KOKKOS tests on the GPU, and time granular/grflow/kk against
+# The GPU check of granular/grflow/kk and fix grflow/wall/kk, for one loan
+# of a GPU machine (one NVIDIA H100 or H200, CUDA 13, no internet, at most
+# 10 minutes a command): build LAMMPS with GRFLOW and KOKKOS for CUDA from a
+# carried tarball, run the KOKKOS tests on the GPU (both styles, against
+# their plain versions on the host), and time granular/grflow/kk against
 # gran/hooke/history/kk on the jammed packing tiled to 8000, 64000 and
-# 512000 spheres.
+# 512000 spheres (the benchmark has no walls).
 #
 #   scripts/gpu-check.sh pack KOKKOS [CARRY]      here, before the loan
 #   scripts/gpu-check.sh build|test|bench|all [CARRY]   on the GPU machine
@@ -23,7 +24,8 @@
 #        (scripts/setup-kokkos.sh cuda); a second call continues a build cut
 #        short
 # test   tests/python/test_kokkos.py on the GPU (pytest and numpy needed),
-#        against the plain styles of the same lmp
+#        against the plain styles of the same lmp: granular/grflow/kk and
+#        fix grflow/wall/kk (-sf kk chooses both)
 # bench  bench/kokkos_bench.sh, TILES="1 2 4" (8000, 64000, 512000 spheres)
 # all    build, test and bench
 #

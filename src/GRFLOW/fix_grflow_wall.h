@@ -69,8 +69,9 @@ class FixGRFLOWWall : public Fix {
   GRFLOW::FlatWalls *walls;      // the walls, their contacts and histories
   GRFLOW::WallNearList *near;    // atoms that may touch a wall
 
- private:
   void crossed(int, int);
+
+ private:
   void check_box();
 };
 

@@ -156,7 +156,12 @@ namespace GRFLOW {
     {
       return &contact[i][REC_SIZE * w + REC_FORCE];
     }
-    static double normal_sign(int w) { return w == LO ? 1.0 : -1.0; }
+    static GRFLOW_INLINE double normal_sign(int w) { return w == LO ? 1.0 : -1.0; }
+    // whether a centre at z reached or passed wall w at z_wall
+    static GRFLOW_INLINE bool reached(int w, double z_wall, double z)
+    {
+      return normal_sign(w) * (z - z_wall) <= 0.0;
+    }
     // the step of those contacts (-1 before the first run's setup)
     int64_t contacts_step() const { return contact_step; }
 
@@ -197,9 +202,8 @@ namespace GRFLOW {
       for (int iw = 0; iw < NWALL; iw++) {
         const Wall &wall = walls[iw];
         if (!wall.active) continue;
-        const double sign = normal_sign(iw);
         for (int i = 0; i < s.nlocal; i++)
-          if ((s.mask[i] & s.groupbit) && sign * (s.x[i][2] - wall.z) <= 0.0) {
+          if ((s.mask[i] & s.groupbit) && reached(iw, wall.z, s.x[i][2])) {
             w = iw;
             return i;
           }

@@ -106,13 +106,21 @@ namespace GRFLOW {
 
   // an atom whose wall histories came from elsewhere: no force-bearing
   // contact on record, but the next contact pass clears a history of a
-  // wall it does not touch
-  static inline void mark_wall_contacts_unknown(FlatWalls &cell, int i)
+  // wall it does not touch (rec: its NCONTACT values; active: the walls'
+  // flags; also in device code)
+  static GRFLOW_INLINE void mark_wall_records_unknown(const int *active, double *rec)
   {
     typedef FlatWalls W;
-    for (int m = 0; m < W::NCONTACT; m++) cell.contact[i][m] = 0.0;
+    for (int m = 0; m < W::NCONTACT; m++) rec[m] = 0.0;
     for (int w = 0; w < W::NWALL; w++)
-      if (cell.walls[w].active) cell.contact[i][W::REC_SIZE * w + W::REC_ARM] = -1.0;
+      if (active[w]) rec[W::REC_SIZE * w + W::REC_ARM] = -1.0;
+  }
+
+  static inline void mark_wall_contacts_unknown(FlatWalls &cell, int i)
+  {
+    const int active[FlatWalls::NWALL] = {cell.walls[FlatWalls::LO].active,
+                                          cell.walls[FlatWalls::HI].active};
+    mark_wall_records_unknown(active, cell.contact[i]);
   }
 
   static inline void clear_wall_atom(FlatWalls &cell, int i)

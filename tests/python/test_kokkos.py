@@ -1,5 +1,5 @@
-"""pair_style granular/grflow/kk (the KOKKOS package) against granular/grflow
-and against closed forms.
+"""pair_style granular/grflow/kk and fix grflow/wall/kk (the KOKKOS package)
+against granular/grflow and fix grflow/wall, and against closed forms.
 
 The KOKKOS style runs the same contact law (grflow_contact.h) on a Kokkos
 device; its contact history lives in FixNeighHistoryGRFLOWKokkos, which
@@ -21,8 +21,18 @@ reason:
 - the owner swap of a pair crossing a periodic boundary (the rolling
   spring keeps its sign), a sphere that touches another again (new
   springs), coefficients changed between runs and by fix adapt;
-- a packing sheared between fix grflow/wall walls (a host fix beside the
+- a packing sheared between fix grflow/wall walls (the host fix beside the
   KOKKOS pair style), and compute grflow/network refused with an error;
+- fix grflow/wall/kk (whose contacts call the same functions of
+  grflow_wall_pass.h) on the packing of tests/decks/wall_packing.lmp:
+  forces, torques, the per-atom array, the walls' per-atom virial, the
+  global vector and the pressure at a state with loaded wall springs and
+  after one step; trajectories sheared by the top wall on 1 and 2 ranks
+  (spheres touching a wall change rank), sorted and exchanged on the host
+  or the device, with threads; a restart in the middle (kk -> kk,
+  fix grflow/wall -> kk, kk -> fix grflow/wall, 2 ranks); coefficients
+  changed by fix_modify; the crossing error; compute grflow/network
+  counting its contacts;
 - the restitution coefficient of a head-on collision against its closed
   forms, under both normal force laws;
 - the clear errors of unsupported settings (newton on, full neighbor
@@ -42,6 +52,7 @@ GRFLOW_TEST_DECKS.
 import json
 import math
 import os
+import re
 import shlex
 import subprocess
 from pathlib import Path
@@ -74,8 +85,11 @@ def kk_args(threads=None, extra=""):
     return args
 
 
-def run(args, cwd, kokkos=False, nprocs=1, check=True, threads=None, extra="", timeout=900):
-    """lmp (LMP, or LMP_KOKKOS with the KOKKOS switches if kokkos) on nprocs ranks"""
+def run(args, cwd, kokkos=False, nprocs=1, check=True, threads=None, extra="", timeout=900,
+        pair_kk=True, wall_kk=False):
+    """lmp (LMP, or LMP_KOKKOS with the KOKKOS switches if kokkos) on nprocs ranks;
+    a KOKKOS run checks that it used granular/grflow/kk (pair_kk) and fix
+    grflow/wall/kk (wall_kk)"""
     exe = LMP_KOKKOS if kokkos else LMP
     cmd = [exe, "-log", "none", "-nocite", "-echo", "none"]
     if kokkos:
@@ -86,10 +100,17 @@ def run(args, cwd, kokkos=False, nprocs=1, check=True, threads=None, extra="", t
     proc = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True, timeout=timeout)
     if check:
         assert proc.returncode == 0, " ".join(cmd) + "\n" + proc.stdout[-3000:] + proc.stderr[-3000:]
-    if kokkos and check and "-h" not in args:
+    if kokkos and check and "-h" not in args and pair_kk:
         # the suffix chose the KOKKOS style (LAMMPS lists its neighbor list)
         assert "pair granular/grflow/kk" in proc.stdout, proc.stdout[-3000:]
+    if kokkos and check and wall_kk:
+        # fix grflow/wall/kk says so when it is made (it takes the style name
+        # grflow/wall, for restart files)
+        assert WALL_KK_LINE in proc.stdout, proc.stdout[-3000:]
     return proc
+
+
+WALL_KK_LINE = "the walls' contacts on the Kokkos"
 
 
 def snapshots(dump):
@@ -124,6 +145,7 @@ def test_kokkos_lmp_has_the_style(tmp_path):
     out = run(["-h"], tmp_path, kokkos=False).stdout
     proc = subprocess.run([LMP_KOKKOS, "-h"], capture_output=True, text=True)
     assert "granular/grflow/kk" in proc.stdout
+    assert "grflow/wall/kk" in proc.stdout
     assert "KOKKOS" in proc.stdout
     assert "granular/grflow" in out
 
@@ -495,13 +517,39 @@ def test_coefficients_change_between_runs_and_by_fix_adapt(packing):
     assert dw < 1e-4
 
 
-WALL_DECK = """newton {newton}
+# ---------------------------------------------------------------------------
+# walls: the packing of tests/decks/wall_packing.lmp, 144 spheres at rest
+# between two fix grflow/wall walls pressed with about 5 N, the wall and
+# contact springs loaded
+
+@pytest.fixture(scope="module")
+def wall_packing(tmp_path_factory):
+    """the restart file of tests/decks/wall_packing.lmp, written by
+    granular/grflow and fix grflow/wall, and the packing as a data file"""
+    work = tmp_path_factory.mktemp("kokkos_wall")
+    restart = work / "wall.restart"
+    run(["-in", os.path.join(DECKS, "wall_packing.lmp"), "-var", "restart", str(restart),
+         "-var", "dump", str(work / "wall_prep.dump")], work)
+    deck = work / "in.wall_data"
+    deck.write_text(f"read_restart {restart}\nwrite_data {work / 'wall.data'} nocoeff\n")
+    run(["-in", str(deck)], work)
+    return work, restart
+
+
+# the global vector (forces, positions, displacements of both walls) and
+# the per-atom array (per wall: arm, force on the atom)
+WALL_VECTOR = " ".join(f"$(f_w[{k}]:%.17g)" for k in range(1, 13))
+WALL_ARRAY = " ".join(f"f_w[{k}]" for k in range(1, 9))
+
+HOST_WALL_DECK = """newton {newton}
 processors 1 1 1
 read_restart {restart}
 comm_modify vel yes
 neighbor 0.2e-3 bin
 neigh_modify delay 0 every 1 check yes
+{suffix_off}
 fix w all grflow/wall 1.0e6 1.15 zlo 0.0 zhi 8.0e-3
+{suffix_on}
 fix nve all nve/sphere
 fix_modify w wall hi vel 0.05 0.0 0.0
 run 3000
@@ -510,31 +558,550 @@ write_dump all custom {dump} id x y z omegax omegay omegaz modify sort id format
 """
 
 
-def test_with_fix_grflow_wall(tmp_path):
-    """the packing of tests/decks/wall_packing.lmp between two GRFLOW walls,
-    sheared by the top wall: fix grflow/wall (no KOKKOS variant: it runs on
-    the host, LAMMPS copies the data each step) beside granular/grflow/kk"""
-    restart = tmp_path / "wall.restart"
-    run(["-in", os.path.join(DECKS, "wall_packing.lmp"), "-var", "restart", str(restart),
-         "-var", "dump", str(tmp_path / "wall_prep.dump")], tmp_path)
+def test_host_fix_grflow_wall_beside_kokkos_pair(wall_packing):
+    """the packing sheared by the top wall: fix grflow/wall on the host (the
+    suffix off around it) beside granular/grflow/kk; LAMMPS copies the data
+    between host and device each step"""
+    work, restart = wall_packing
     res, walls = {}, {}
     for kk in (False, True):
-        dump = tmp_path / f"wall_{kk}.dump"
-        deck = tmp_path / f"in.wall_{kk}"
-        deck.write_text(WALL_DECK.format(newton="off" if kk else "on", restart=restart, dump=dump))
-        walls[kk] = values(run(["-in", str(deck)], tmp_path, kokkos=kk).stdout, "WALL")
+        dump = work / f"host_wall_{kk}.dump"
+        deck = work / f"in.host_wall_{kk}"
+        deck.write_text(HOST_WALL_DECK.format(
+            newton="off" if kk else "on", restart=restart, dump=dump,
+            suffix_off="suffix off" if kk else "", suffix_on="suffix on" if kk else ""))
+        proc = run(["-in", str(deck)], work, kokkos=kk)
+        assert WALL_KK_LINE not in proc.stdout
+        walls[kk] = values(proc.stdout, "WALL")
         res[kk] = np.loadtxt(dump, skiprows=9)
     dx = rel_diff(res[True][:, 1:4], res[False][:, 1:4])
     dw = rel_diff(res[True][:, 4:7], res[False][:, 4:7])
     dwall = rel_diff(walls[True], walls[False])
-    print(f"[ measured ] with fix grflow/wall, 3000 sheared steps: x {dx:.3e} omega {dw:.3e} "
-          f"wall forces {dwall:.3e}")
+    print(f"[ measured ] host fix grflow/wall beside granular/grflow/kk, 3000 sheared steps: "
+          f"x {dx:.3e} omega {dw:.3e} wall forces {dwall:.3e}")
     assert np.abs(walls[False]).max() > 0.0
     # round-off grown over 3000 steps (as test_sheared_trajectory); a wall
     # or pair force lost between host and device would change omega by O(1)
     assert dx < 1e-6
     assert dw < 1e-4
     assert dwall < 1e-4
+
+
+# fix grflow/wall/kk against fix grflow/wall: walls with two settings of
+# the wall law (the coefficients after kn cn, the keywords after the walls)
+WALL_SETTINGS = {
+    "default": ("", ""),
+    "unclipped-full": ("kt 6.0e5 mur 0.2 muo 0.3", "normal_force unclipped velocity_arm full"),
+}
+
+WALL_STATE_DECK = """newton {newton}
+read_restart {restart}
+comm_modify vel yes
+neighbor 0.2e-3 bin
+neigh_modify delay 0 every 1 check yes
+fix w all grflow/wall 1.0e6 1.15 {coeffs} zlo 0.0 zhi 8.0e-3 {options}
+fix nve all nve/sphere
+fix_modify w wall hi vel 0.05 0.02 -0.01
+compute st all stress/atom NULL fix
+dump d all custom 1 {dump} id fx fy fz tqx tqy tqz """ + WALL_ARRAY + """ &
+     c_st[1] c_st[2] c_st[3] c_st[4] c_st[5] c_st[6]
+dump_modify d sort id format float %.17g
+variable p equal press
+variable pzz equal pzz
+variable pxz equal pxz
+variable pyz equal pyz
+run 0
+print "WALL0 """ + WALL_VECTOR + """"
+print "PRESS0 $(v_p:%.17g) $(v_pzz:%.17g) $(v_pxz:%.17g) $(v_pyz:%.17g)"
+run 1
+print "WALL1 """ + WALL_VECTOR + """"
+print "PRESS1 $(v_p:%.17g) $(v_pzz:%.17g) $(v_pxz:%.17g) $(v_pyz:%.17g)"
+"""
+
+
+def wall_state_diffs(kk, cpu):
+    """relative differences of two snapshots of WALL_STATE_DECK: forces (of
+    the largest contact force: the packing is at rest, its net forces are
+    1e-2 of its contact forces), torques, the arms and forces of the
+    per-atom array, the walls' per-atom virial"""
+    rec = [8, 9, 10, 12, 13, 14]
+    return {"force": np.abs(kk[:, 1:4] - cpu[:, 1:4]).max() / np.abs(cpu[:, rec]).max(),
+            "torque": rel_diff(kk[:, 4:7], cpu[:, 4:7]),
+            "arms": rel_diff(kk[:, [7, 11]], cpu[:, [7, 11]]),
+            "record forces": rel_diff(kk[:, rec], cpu[:, rec]),
+            "stress/atom": rel_diff(kk[:, 15:21], cpu[:, 15:21])}
+
+
+@pytest.mark.parametrize("setting", list(WALL_SETTINGS))
+def test_wall_state_forces_and_outputs(wall_packing, setting):
+    """fix grflow/wall/kk (and granular/grflow/kk) against fix grflow/wall at
+    the state of the restart file, the wall springs as read from it (run 0),
+    then after one step, which advances them: forces and torques, the
+    per-atom array, the walls' per-atom virial, the global vector and the
+    pressure"""
+    work, restart = wall_packing
+    coeffs, options = WALL_SETTINGS[setting]
+    out, snaps = {}, {}
+    for kk in (False, True):
+        tag = f"{setting}_{'kk' if kk else 'cpu'}"
+        dump = work / f"wall_state_{tag}.dump"
+        deck = work / f"in.wall_state_{tag}"
+        # newton off for both: granular/grflow alone differs between newton on
+        # and off by 2e-13 of the largest contact force here
+        deck.write_text(WALL_STATE_DECK.format(newton="off", restart=restart, coeffs=coeffs,
+                                               options=options, dump=dump))
+        proc = run(["-in", str(deck)], work, kokkos=kk, wall_kk=kk)
+        # the wall springs came from the plain fix's restart file
+        assert "Resetting peratom fix info from restart file:\n  fix style: grflow/wall, " \
+               "fix ID: w" in proc.stdout
+        out[kk], snaps[kk] = proc.stdout, snapshots(dump)
+    cpu0, kk0 = snaps[False][0], snaps[True][0]
+    assert np.array_equal(cpu0[:, 0], kk0[:, 0])
+    # force-bearing contacts on both walls, none left unknown
+    assert (cpu0[:, 7] > 0).sum() >= 3 and (cpu0[:, 11] > 0).sum() >= 3
+    assert (cpu0[:, [7, 11]] >= 0).all() and (kk0[:, [7, 11]] >= 0).all()
+
+    # step 0: the walls' contact of an atom is the same function of the same
+    # numbers in both fixes (grflow_wall_pass.h): measured equal to the bit;
+    # 1e-13 leaves room for a GPU compiler's fused multiply-adds.  The
+    # forces and torques hold the pair forces too, summed in another order
+    # (test_state_forces_energy_virial); the wall forces and the pressure
+    # are sums over atoms, in another order with threads or on a GPU.  A
+    # wrong spring, arm or sign gives O(1e-2) and more.
+    d0 = wall_state_diffs(kk0, cpu0)
+    d0["wall vector"] = rel_diff(values(out[True], "WALL0"), values(out[False], "WALL0"))
+    d0["pressure"] = rel_diff(values(out[True], "PRESS0"), values(out[False], "PRESS0"))
+    print(f"[ measured ] walls {setting}, step 0: "
+          + ", ".join(f"{name} {d:.2e}" for name, d in d0.items()))
+    assert d0["force"] < 1e-12 and d0["torque"] < 1e-12
+    for name in ("arms", "record forces", "stress/atom"):
+        assert d0[name] < 1e-13
+    assert d0["wall vector"] < 1e-12
+    assert d0["pressure"] < 1e-12
+
+    # one step: the springs advanced by each fix from states equal to
+    # round-off (as test_state_forces_energy_virial)
+    cpu1, kk1 = snaps[False][1], snaps[True][1]
+    d1 = wall_state_diffs(kk1, cpu1)
+    d1["wall vector"] = rel_diff(values(out[True], "WALL1"), values(out[False], "WALL1"))
+    d1["pressure"] = rel_diff(values(out[True], "PRESS1"), values(out[False], "PRESS1"))
+    print(f"[ measured ] walls {setting}, step 1: "
+          + ", ".join(f"{name} {d:.2e}" for name, d in d1.items()))
+    for d in d1.values():
+        assert d < 1e-10
+
+
+# trajectories: the top wall shears the packing along x for WALL_STEPS
+# steps at WALL_VX, as the shear cell of inputs/ does.  With two ranks
+# side by side in x, their border is moved to WALL_CUT of the box (balance,
+# after a run 0: the fixes must have taken their restart data), so that two
+# spheres touching the top wall cross it during the run.  Newton off for all, as the KOKKOS
+# pair style needs: granular/grflow alone differs between newton on and off
+# by 2e-13 of the contact forces at the start, which grows to 3e-8 in x
+# over the run, and would hide what is compared.
+WALL_STEPS, WALL_VX, WALL_CUT = 3000, 0.5, 0.495
+
+WALL_RUN_DECK = """newton off
+processors {grid}
+read_restart {restart}
+comm_modify vel yes
+atom_modify sort {sort} 0.0
+neighbor 0.2e-3 bin
+neigh_modify delay 0 every 1 check yes
+fix {wid} all grflow/wall 1.0e6 1.15 zlo 0.0 zhi 8.0e-3
+fix nve all nve/sphere
+fix_modify {wid} wall hi vel {vx} 0.0 0.0
+run 0
+{balance}
+dump p all custom 100 {procs} id proc f_{wid}[1] f_{wid}[5]
+dump_modify p sort id
+run {steps}
+print "WALL """.replace("f_w[", "f_{wid}[") + WALL_VECTOR.replace("f_w[", "f_{wid}[") + """"
+write_dump all custom {dump} id x y z omegax omegay omegaz """ + \
+    WALL_ARRAY.replace("f_w[", "f_{wid}[") + """ modify sort id format float %.17g
+"""
+
+
+def wall_run(wall_packing, tag, kokkos=False, nprocs=1, grid="1 1 1", sort=1000, threads=None,
+             extra="", wid="w"):
+    """WALL_RUN_DECK: the final x, omega, per-atom array and global vector,
+    and the snapshots of id, rank and arms; a fix ID other than the restart
+    file's (wid) starts the walls' springs empty"""
+    work, restart = wall_packing
+    dump, procs = work / f"wall_run_{tag}.dump", work / f"wall_run_{tag}.procs"
+    deck = work / f"in.wall_run_{tag}"
+    deck.write_text(WALL_RUN_DECK.replace("{wid}", wid).format(
+        grid=grid, restart=restart, balance=wall_balance(nprocs), sort=sort, vx=WALL_VX,
+        steps=WALL_STEPS, dump=dump, procs=procs))
+    proc = run(["-in", str(deck)], work, kokkos=kokkos, nprocs=nprocs, threads=threads,
+               extra=extra, wall_kk=kokkos)
+    table = np.loadtxt(dump, skiprows=9)
+    return {"x": table[:, 1:4], "omega": table[:, 4:7], "array": table[:, 7:15],
+            "vector": values(proc.stdout, "WALL"), "procs": snapshots(procs),
+            "output": proc.stdout}
+
+
+def wall_balance(nprocs):
+    return f"balance 1.0 x {WALL_CUT}" if nprocs > 1 else ""
+
+
+def touching_rank_changes(procs):
+    """spheres touching a wall (arm > 0 in one of two snapshots) whose rank
+    changed between them"""
+    n = 0
+    for a, b in zip(procs[:-1], procs[1:]):
+        touching = (a[:, 2] > 0) | (a[:, 3] > 0) | (b[:, 2] > 0) | (b[:, 3] > 0)
+        n += int(np.sum(touching & (a[:, 1] != b[:, 1])))
+    return n
+
+
+@pytest.fixture(scope="module")
+def wall_reference(wall_packing):
+    """fix grflow/wall and granular/grflow, 1 rank"""
+    return wall_run(wall_packing, "cpu")
+
+
+def wall_deviations(res, ref):
+    """relative differences of a wall run from the reference: x, omega,
+    the per-atom array (the arms; the forces of the force-bearing contacts,
+    arm > 0: the others are not meaningful), the global vector"""
+    arms = [0, 4]
+    bearing = np.repeat(ref["array"][:, arms] > 0, 3, axis=1)
+    forces = [1, 2, 3, 5, 6, 7]
+    return {"x": rel_diff(res["x"], ref["x"]), "omega": rel_diff(res["omega"], ref["omega"]),
+            "arms": rel_diff(res["array"][:, arms], ref["array"][:, arms]),
+            "array forces": rel_diff(np.where(bearing, res["array"][:, forces], 0.0),
+                                     np.where(bearing, ref["array"][:, forces], 0.0)),
+            "wall vector": rel_diff(res["vector"], ref["vector"])}
+
+
+def check_wall_deviations(d):
+    # Round-off (another summation order of the pair forces: the KOKKOS
+    # loop, threads, ranks) grows chaotically over the run.  Measured on the
+    # OpenMP backend: up to 5.2e-11 in x, 2.5e-9 in omega, 2.4e-12 in the
+    # arms, 9.9e-10 in the array's forces, 5.0e-10 in the wall vector.  The
+    # walls' springs lost once, at the start (test_wall_trajectory_detects_
+    # lost_springs), give 3.5e-2 in x, 0.30 in omega and 1 in the others.
+    # Each threshold lies about halfway between on a log scale (an arm also
+    # differs by O(1) if a contact opens or closes on another step).
+    assert d["x"] < 1e-6
+    assert d["omega"] < 1e-5
+    assert d["arms"] < 1e-6
+    assert d["array forces"] < 1e-5
+    assert d["wall vector"] < 1e-5
+
+
+# (ranks, processor grid, sort interval, threads, package kokkos options):
+# spheres touching the walls change rank with 2 ranks side by side in x
+# (the top wall drags them across), on the host or on the device (comm
+# device), and are sorted on the host or on the device (sort device)
+WALL_VARIANTS = [(1, "1 1 1", 1000, None, ""), (1, "1 1 1", 10, None, "sort device"),
+                 (2, "2 1 1", 1000, None, ""), (2, "2 1 1", 10, None, "comm device sort device")]
+if THREADS > 1:
+    WALL_VARIANTS += [(1, "1 1 1", 10, THREADS, ""), (2, "2 1 1", 1000, THREADS, "comm device")]
+
+
+@pytest.mark.parametrize("nprocs,grid,sort,threads,extra", WALL_VARIANTS)
+def test_wall_trajectory(wall_packing, wall_reference, nprocs, grid, sort, threads, extra):
+    """fix grflow/wall/kk and granular/grflow/kk: WALL_STEPS steps sheared by
+    the top wall (fix_modify wall hi vel), against fix grflow/wall"""
+    tag = f"kk_np{nprocs}_sort{sort}_t{threads}_{extra.replace(' ', '_')}"
+    res = wall_run(wall_packing, tag, kokkos=True, nprocs=nprocs, grid=grid,
+                   sort=sort, threads=threads, extra=extra)
+    d = wall_deviations(res, wall_reference)
+    moved = touching_rank_changes(res["procs"]) if nprocs > 1 else 0
+    print(f"[ measured ] wall kk np={nprocs} sort={sort} threads={threads} {extra or '-'}: "
+          + ", ".join(f"{name} {v:.2e}" for name, v in d.items())
+          + (f"; {moved} rank changes of spheres touching a wall" if nprocs > 1 else ""))
+    # the top wall moved, and the walls bear the packing
+    assert abs(res["vector"][10] - WALL_STEPS * 1.0e-7 * WALL_VX) < 1e-12
+    assert res["vector"][2] < -1.0 and res["vector"][8] > 1.0
+    if nprocs > 1:
+        assert moved >= 1, "no sphere touching a wall changed rank: the test needs some"
+    # the KOKKOS package exchanged and sorted on the device where asked (a
+    # fix without pack_exchange_kokkos or sort_kokkos makes it fall back to
+    # the host with these warnings, as fix grflow/wall does)
+    assert "not compatible with sending data in Kokkos communication" not in res["output"]
+    assert "not compatible with Kokkos sorting on device" not in res["output"]
+    check_wall_deviations(d)
+
+
+def test_wall_trajectory_detects_lost_springs(wall_packing, wall_reference):
+    """the scale of a real error for the thresholds of check_wall_deviations():
+    the plain fix with another ID than the restart file's starts the walls'
+    springs empty, as a fix that lost them at a restart or an exchange would"""
+    res = wall_run(wall_packing, "cpu_lost", wid="w2")
+    d = wall_deviations(res, wall_reference)
+    print("[ measured ] walls' springs lost at the start: "
+          + ", ".join(f"{name} {v:.2e}" for name, v in d.items()))
+    with pytest.raises(AssertionError):
+        check_wall_deviations(d)
+    assert d["omega"] > 1e-4 and d["array forces"] > 1e-4 and d["wall vector"] > 1e-4
+
+
+# a restart in the middle: the walls' state (global) and springs (per atom)
+WALL_HALF_DECK = """newton off
+processors {grid}
+read_restart {restart}
+comm_modify vel yes
+neighbor 0.2e-3 bin
+neigh_modify delay 0 every 1 check yes
+fix w all grflow/wall 1.0e6 1.15 zlo 0.0 zhi 8.0e-3
+fix nve all nve/sphere
+fix_modify w wall hi vel {vx} 0.0 0.0
+run 0
+{balance}
+run {steps}
+{after}
+"""
+
+WALL_RESUME_DECK = """newton off
+processors {grid}
+read_restart {restart}
+comm_modify vel yes
+neighbor 0.2e-3 bin
+neigh_modify delay 0 every 1 check yes
+fix w all grflow/wall 1.0e6 1.15 zlo 0.0 zhi 8.0e-3
+fix nve all nve/sphere
+run {steps}
+{after}
+"""
+
+WALL_END = ("print \"WALL " + WALL_VECTOR + "\"\nwrite_dump all custom {dump} id x y z omegax "
+            "omegay omegaz " + WALL_ARRAY + " modify sort id format float %.17g")
+
+
+def wall_result(dump, output):
+    table = np.loadtxt(dump, skiprows=9)
+    return {"x": table[:, 1:4], "omega": table[:, 4:7], "array": table[:, 7:15],
+            "vector": values(output, "WALL")}
+
+
+@pytest.fixture(scope="module")
+def wall_unbroken(wall_packing):
+    """fix grflow/wall and granular/grflow: WALL_STEPS steps in two runs in
+    one process, with the run 0 that precedes write_restart in
+    test_wall_restart_in_the_middle"""
+    work, restart = wall_packing
+    dump = work / "wall_unbroken.dump"
+    deck = work / "in.wall_unbroken"
+    deck.write_text(WALL_HALF_DECK.format(
+        grid="1 1 1", restart=restart, balance="", vx=WALL_VX, steps=WALL_STEPS // 2,
+        after=f"run 0\nrun {WALL_STEPS // 2}\n" + WALL_END.format(dump=dump)))
+    return wall_result(dump, run(["-in", str(deck)], work).stdout)
+
+
+@pytest.mark.parametrize("first_kk,second_kk,nprocs", [
+    (True, True, 1), (False, True, 1), (True, False, 1), (True, True, 2)])
+def test_wall_restart_in_the_middle(wall_packing, wall_unbroken, first_kk, second_kk, nprocs):
+    """WALL_STEPS / 2 steps, write_restart, then as many read from the file:
+    the wall positions, velocities and displacements, and the walls'
+    springs (fix grflow/wall/kk takes the style name grflow/wall, so that
+    LAMMPS gives its per-atom restart data to either fix).  A run 0 comes
+    before write_restart: without it, write_restart changes the pair
+    springs of some contacts across the periodic borders here (0.16 N in a
+    force of the next step; the same with main's granular/grflow and fix
+    grflow/wall).  Diagnosis: FixNeighHistory::write_restart() of LAMMPS
+    4Feb2025 calls pre_exchange() with a neighbor list whose ghost atoms
+    WriteRestart's comm->borders() has just replaced; a run 0 builds the
+    list for the ghost atoms that write_restart's borders() makes again."""
+    work, restart = wall_packing
+    names = {True: "kk", False: "cpu"}
+    tag = f"{names[first_kk]}_{names[second_kk]}_np{nprocs}"
+    grid = "2 1 1" if nprocs == 2 else "1 1 1"
+    middle, dump = work / f"wall_half_{tag}.restart", work / f"wall_half_{tag}.dump"
+    deck = work / f"in.wall_half_{tag}"
+    deck.write_text(WALL_HALF_DECK.format(grid=grid, restart=restart,
+                                          balance=wall_balance(nprocs),
+                                          vx=WALL_VX, steps=WALL_STEPS // 2,
+                                          after=f"run 0\nwrite_restart {middle}"))
+    run(["-in", str(deck)], work, kokkos=first_kk, nprocs=nprocs, wall_kk=first_kk)
+    deck = work / f"in.wall_resume_{tag}"
+    deck.write_text(WALL_RESUME_DECK.format(grid=grid, restart=middle, steps=WALL_STEPS // 2,
+                                            after=WALL_END.format(dump=dump)))
+    proc = run(["-in", str(deck)], work, kokkos=second_kk, nprocs=nprocs, wall_kk=second_kk)
+    for kind in ("global", "peratom"):
+        assert f"Resetting {kind} fix info from restart file:\n  fix style: grflow/wall, " \
+               "fix ID: w" in proc.stdout
+    res = wall_result(dump, proc.stdout)
+    d = wall_deviations(res, wall_unbroken)
+    print(f"[ measured ] wall restart {names[first_kk]} -> {names[second_kk]}, np={nprocs}: "
+          + ", ".join(f"{name} {v:.2e}" for name, v in d.items()))
+    # the top wall went on with the velocity of the first half
+    assert abs(res["vector"][10] - WALL_STEPS * 1.0e-7 * WALL_VX) < 1e-12
+    check_wall_deviations(d)
+
+
+WALL_COEFF_DECK = """newton off
+read_restart {restart}
+comm_modify vel yes
+neighbor 0.2e-3 bin
+neigh_modify delay 0 every 1 check yes
+fix w all grflow/wall 1.0e6 1.15 zlo 0.0 zhi 8.0e-3
+fix nve all nve/sphere
+fix_modify w wall hi vel 0.2 0.0 0.0
+run 1000
+{change1}
+run 1000
+{change2}
+run 1000
+""" + WALL_END
+
+
+def test_wall_fix_modify_coefficients(wall_packing):
+    """fix_modify of the wall coefficients between runs (the springs kept):
+    fix grflow/wall/kk takes the new values on the device"""
+    work, restart = wall_packing
+    res = {}
+    for tag, kk, changes in (("cpu", False, True), ("kk", True, True),
+                             ("cpu_same", False, False)):
+        dump = work / f"wall_coeff_{tag}.dump"
+        deck = work / f"in.wall_coeff_{tag}"
+        deck.write_text(WALL_COEFF_DECK.format(
+            restart=restart, dump=dump,
+            change1="fix_modify w mut 0.7 kr 2.0e5" if changes else "",
+            change2="fix_modify w kt 5.0e5 muo 0.3 virial no" if changes else ""))
+        res[tag] = wall_result(dump, run(["-in", str(deck)], work, kokkos=kk,
+                                         wall_kk=kk).stdout)
+    d = wall_deviations(res["kk"], res["cpu"])
+    effect = wall_deviations(res["cpu_same"], res["cpu"])
+    print("[ measured ] wall coefficients changed by fix_modify, 3000 steps: "
+          + ", ".join(f"{name} {v:.2e}" for name, v in d.items())
+          + "; the changes themselves: "
+          + ", ".join(f"{name} {v:.2e}" for name, v in effect.items()))
+    # as the trajectories; coefficients the kk fix did not see would give
+    # the changes' own effect
+    assert effect["array forces"] > 1e-2
+    check_wall_deviations(d)
+
+
+# the crossing error: an atom whose centre reached a wall, found by the
+# contact pass (a wall moved onto the atoms) or before the exchange of a
+# step with a neighbor list build (an atom too fast for the wall)
+CROSSING = re.compile(r"Fix grflow/wall (\S+): atom (\d+) crossed the (zlo|zhi) wall "
+                      r"\(z = (\S+), wall at (\S+)\)")
+
+MOVED_WALL_DECK = """newton {newton}
+read_restart {restart}
+comm_modify vel yes
+neighbor 0.2e-3 bin
+neigh_modify delay 0 every 1 check yes
+fix w all grflow/wall 1.0e6 1.15 zlo 0.0 zhi 8.0e-3
+fix nve all nve/sphere
+run 0
+variable ztop equal bound(all,zmax)
+fix_modify w wall hi z $(v_ztop-2.0e-5:%.17g)
+run 10
+"""
+
+FAST_SPHERE_DECK = """units si
+atom_style sphere
+atom_modify map array
+boundary p p f
+newton {newton}
+comm_modify vel yes
+region box block 0 0.01 0 0.01 0 0.01
+create_box 1 box
+create_atoms 1 single 0.002 0.002 0.005
+create_atoms 1 single 0.005 0.005 0.001
+set group all diameter 1.0e-3 density 2650
+set atom 2 vz -50.0
+pair_style granular/grflow
+pair_coeff * * 1.0e6 1.15
+neighbor 0.2e-3 bin
+neigh_modify delay 0 every 1 check no
+timestep 1.0e-7
+fix w all grflow/wall 1.0e3 0.0 zlo 0.0 zhi 0.01
+fix nve all nve/sphere
+run 1000
+"""
+
+
+@pytest.mark.parametrize("case", ["moved wall", "fast sphere"])
+def test_wall_crossing_error(wall_packing, case):
+    """the error of the plain fix, from fix grflow/wall/kk: the same atom,
+    wall and positions"""
+    work, restart = wall_packing
+    found = {}
+    for kk in (False, True):
+        deck = work / f"in.crossing_{case.replace(' ', '_')}_{kk}"
+        text = MOVED_WALL_DECK if case == "moved wall" else FAST_SPHERE_DECK
+        deck.write_text(text.format(newton="off" if kk else "on", restart=restart))
+        proc = run(["-in", str(deck)], work, kokkos=kk, check=False)
+        text = proc.stdout + proc.stderr
+        assert proc.returncode != 0, text[-2000:]
+        if kk:
+            assert WALL_KK_LINE in proc.stdout
+        match = CROSSING.search(text)
+        assert match, text[-2000:]
+        found[kk] = match.groups()
+    print(f"[ measured ] crossing, {case}: plain {found[False]}, kk {found[True]}")
+    # fix ID, atom and wall the same; the positions the same state's (the
+    # moved wall: run 0's; the fast sphere: 200 steps of free flight and
+    # wall contact, which fix nve/sphere/kk rounds differently)
+    assert found[True][:3] == found[False][:3]
+    assert found[True][2] == ("zhi" if case == "moved wall" else "zlo")
+    for k in (3, 4):
+        assert abs(float(found[True][k]) - float(found[False][k])) < 1e-12
+
+
+# compute grflow/network counts the walls' contacts through
+# extract("grflow/wall_contacts"); it runs on the host with granular/grflow
+# (granular/grflow/kk refuses it), here beside fix grflow/wall/kk
+NETWORK_WALL_DECK = """units si
+atom_style sphere
+atom_modify map array
+boundary p p f
+newton off
+comm_modify vel yes
+read_data {data}
+suffix off
+pair_style granular/grflow
+pair_coeff * * 1.0e6 1.15
+neighbor 0.2e-3 bin
+neigh_modify delay 0 every 1 check yes
+timestep 1.0e-7
+fix w all {wall} 1.0e6 1.15 zlo 0.0 zhi 8.0e-3
+fix nve all nve/sphere
+fix_modify w wall hi vel 0.2 0.0 0.0
+variable zlo equal f_w[4]
+variable zhi equal f_w[10]
+compute net all grflow/network zlimits v_zlo v_zhi
+compute nets all grflow/network zlimits 2.0e-3 6.0e-3
+thermo_style custom step c_net[1] c_nets[1]
+run 0
+print "NET0 {net}"
+run 2000
+print "NET1 {net}"
+"""
+
+
+def test_compute_grflow_network_with_kokkos_wall(wall_packing):
+    """the sums of compute grflow/network (whole cell, and a slab away from
+    the walls that counts none of their contacts) with fix grflow/wall/kk
+    and with fix grflow/wall, granular/grflow and fix nve/sphere on the host
+    (suffix off), from the packing's data file (no springs)"""
+    work, restart = wall_packing
+    net = " ".join(f"$(c_{c}[{k}]:%.17g)" for c in ("net", "nets") for k in range(1, 27))
+    out = {}
+    for kk in (False, True):
+        deck = work / f"in.network_wall_{kk}"
+        deck.write_text(NETWORK_WALL_DECK.format(
+            data=work / "wall.data", wall="grflow/wall/kk" if kk else "grflow/wall", net=net))
+        proc = run(["-in", str(deck)], work, kokkos=kk, pair_kk=False, wall_kk=kk)
+        out[kk] = proc.stdout
+    n0 = {kk: values(out[kk], "NET0") for kk in out}
+    n1 = {kk: values(out[kk], "NET1") for kk in out}
+    d0, d1 = rel_diff(n0[True], n0[False]), rel_diff(n1[True], n1[False])
+    print(f"[ measured ] compute grflow/network with fix grflow/wall/kk: step 0 {d0:.2e}, "
+          f"after 2000 sheared steps {d1:.2e}")
+    assert np.abs(n0[False]).max() > 0.0
+    # the same contact records (the function of grflow_wall_pass.h) and the
+    # same pair style: equal to round-off at step 0 (measured equal; room
+    # for a GPU's fused multiply-adds), and after 2000 steps round-off grown
+    # as in the trajectories (a record missing or stale gives O(1e-2))
+    assert d0 < 1e-13
+    assert d1 < 1e-6
 
 
 def test_compute_grflow_network_is_refused(loaded):
