@@ -115,7 +115,7 @@ void ComputeGRFLOWNetwork::init()
 
 void ComputeGRFLOWNetwork::check_setup()
 {
-  GRFLOW::PairContacts::check(lmp, "Compute grflow/network");
+  GRFLOW::PairContacts::check(lmp, std::string("Compute ") + style);
 
   region = nullptr;
   if (!opt->region.empty()) {
@@ -193,19 +193,36 @@ void ComputeGRFLOWNetwork::set_inside(double &volume)
     for (int i = 0; i < nlocal; i++)
       inside[i] = ((mask[i] & groupbit) && region->match(x[i][0], x[i][1], x[i][2])) ? 1.0 : 0.0;
   } else {
-    const double zlo = opt->zlo.empty() ? domain->boxlo[2] : eval(opt->zlo, "zlimits");
-    const double zhi = opt->zhi.empty() ? domain->boxhi[2] : eval(opt->zhi, "zlimits");
-    GRFLOW::FixHost host{lmp};
-    if (!(zhi > zlo))
-      error->all(FLERR,
-                 "Compute grflow/network zlimits must have zlo < zhi, got " + host.text(zlo) + " " +
-                     host.text(zhi));
     double lo, hi;
-    opt->slab_bounds(zlo, zhi, lo, hi);
-    volume = domain->xprd * domain->yprd * (hi - lo);
+    volume = slab_volume(lo, hi);
     GRFLOW::NetworkVolume::flag_slab(x, mask, groupbit, nlocal, lo, hi, domain->zperiodic != 0,
                                      domain->boxlo[2], domain->boxhi[2], domain->zprd, inside);
   }
+  check_volume(volume);
+}
+
+/* ----------------------------------------------------------------------
+   the slab of the sample between zlimits (or the box), lo <= z < hi;
+   returns its volume
+------------------------------------------------------------------------- */
+
+double ComputeGRFLOWNetwork::slab_volume(double &lo, double &hi)
+{
+  const double zlo = opt->zlo.empty() ? domain->boxlo[2] : eval(opt->zlo, "zlimits");
+  const double zhi = opt->zhi.empty() ? domain->boxhi[2] : eval(opt->zhi, "zlimits");
+  GRFLOW::FixHost host{lmp};
+  if (!(zhi > zlo))
+    error->all(FLERR,
+               "Compute grflow/network zlimits must have zlo < zhi, got " + host.text(zlo) + " " +
+                   host.text(zhi));
+  opt->slab_bounds(zlo, zhi, lo, hi);
+  return domain->xprd * domain->yprd * (hi - lo);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeGRFLOWNetwork::check_volume(double volume)
+{
   if (!(volume > 0.0) || !std::isfinite(volume)) {
     GRFLOW::FixHost host{lmp};
     error->all(FLERR,
@@ -256,17 +273,28 @@ void ComputeGRFLOWNetwork::evaluate(bool network, double *out)
   // calls, variables) they are done here, as init() may not have been
   if (update->whichflag == 0) check_setup();
   require_current_contacts();
-  grow_peratom();
 
-  const double volume = refresh_ghosts_and_inside();
   // per processor: stress sums sum l (x) f (9), fabric sums sum n (x) n (9),
   // particles inside, floaters, contact ends, histogram of contact numbers
   // (the stress path fills only the first 9)
   std::vector<double> local(GRFLOW::NetworkSums::size(opt->cmax), 0.0);
-  sum_pair_contacts(local.data(), network);
-  sum_wall_contacts(local.data(), network);
-  if (network) count_particles(local.data());
+  const double volume = local_sums(local.data(), network);
   opt->reduce_and_derive(world, local, volume, out, network);
+}
+
+/* ----------------------------------------------------------------------
+   this processor's sums (zeroed by the caller); returns the volume of the
+   sub-volume
+------------------------------------------------------------------------- */
+
+double ComputeGRFLOWNetwork::local_sums(double *sums, bool network)
+{
+  grow_peratom();
+  const double volume = refresh_ghosts_and_inside();
+  sum_pair_contacts(sums, network);
+  sum_wall_contacts(sums, network);
+  if (network) count_particles(sums);
+  return volume;
 }
 
 /* ----------------------------------------------------------------------
@@ -276,15 +304,12 @@ void ComputeGRFLOWNetwork::evaluate(bool network, double *out)
 
 void ComputeGRFLOWNetwork::require_current_contacts()
 {
-  GRFLOW::PairContacts::require_list(lmp, "Compute grflow/network");
+  require_pair_list();
   // the wall contacts are those its post_force() recorded on this step: a
   // fix that invokes the compute in its setup() before the wall fix's
   // setup() has run (it was defined first) would read the last run's
   for (Fix *wfix : walls->fixes) {
-    int dim = -1;
-    const auto *contacts =
-        static_cast<const GRFLOW::WallContacts *>(wfix->extract("grflow/wall_contacts", dim));
-    if (contacts->step == update->ntimestep) continue;
+    if (wall_contacts_step(wfix) == update->ntimestep) continue;
     if (update->whichflag == 2)
       error->all(FLERR,
                  std::string("Compute grflow/network ") + id +
@@ -296,6 +321,37 @@ void ComputeGRFLOWNetwork::require_current_contacts()
                    ": define it before the fixes that invoke this compute, and use the compute "
                    "after a run (run 0 will do)");
   }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeGRFLOWNetwork::require_pair_list()
+{
+  GRFLOW::PairContacts::require_list(lmp, std::string("Compute ") + style);
+}
+
+/* ---------------------------------------------------------------------- */
+
+bigint ComputeGRFLOWNetwork::wall_contacts_step(Fix *wfix)
+{
+  int dim = -1;
+  const auto *contacts =
+      static_cast<const GRFLOW::WallContacts *>(wfix->extract("grflow/wall_contacts", dim));
+  return contacts->step;
+}
+
+/* ---------------------------------------------------------------------- */
+
+int ComputeGRFLOWNetwork::nwall_fixes() const
+{
+  return (int) walls->fixes.size();
+}
+
+/* ---------------------------------------------------------------------- */
+
+Fix *ComputeGRFLOWNetwork::wall_fix(int k) const
+{
+  return walls->fixes[k];
 }
 
 /* ---------------------------------------------------------------------- */
@@ -459,8 +515,9 @@ ComputeGRFLOWNetwork *ComputeGRFLOWNetwork::find(LAMMPS *lmp, const std::string 
 {
   Compute *icompute = GRFLOW::compute_by_id(lmp, id);
   if (!icompute) lmp->error->all(FLERR, caller + ": compute " + id + " does not exist");
+  // the plain style or one of its accelerator variants (grflow/network/kk)
   auto *network = dynamic_cast<ComputeGRFLOWNetwork *>(icompute);
-  if (!network || strcmp(icompute->style, "grflow/network") != 0)
+  if (!network || strncmp(icompute->style, "grflow/network", 14) != 0)
     lmp->error->all(FLERR, caller + ": compute " + id + " is not a compute grflow/network");
   return network;
 }

@@ -56,11 +56,29 @@ class ComputeGRFLOWNetwork : public Compute {
   const double *compute_stress();
   const double *current_stress();
 
- private:
+  // the fixes whose wall contacts the sums include, in definition order
+  int nwall_fixes() const;
+  class Fix *wall_fix(int k) const;
+
+ protected:
   GRFLOW::NetworkOptions *opt;    // the keywords (grflow_network.h)
   GRFLOW::NetworkWalls *walls;    // the fixes with wall contacts
   class Region *region;
 
+  // the checks of init(), made again between runs; the pair style's list
+  // and the step of a wall fix's contacts; the sums of evaluate()
+  // (GRFLOW::NetworkSums) of this processor and the volume of the
+  // sub-volume: the KOKKOS variant does them on the device
+  virtual void check_setup();
+  virtual void require_pair_list();
+  virtual bigint wall_contacts_step(class Fix *);
+  virtual double local_sums(double *sums, bool network);
+
+  // the bounds lo <= z < hi and the volume of the slab (no region)
+  double slab_volume(double &lo, double &hi);
+  void check_volume(double volume);
+
+ private:
   double *stress;    // compute_stress()'s entries, of step invoked_stress
   bigint invoked_stress;
 
@@ -69,7 +87,6 @@ class ComputeGRFLOWNetwork : public Compute {
   double *ncontact;    // force-bearing contacts per atom
   int commflag;
 
-  void check_setup();
   double eval(const std::string &, const char *);
   void set_inside(double &volume);
   void require_current_contacts();

@@ -397,12 +397,20 @@ template <class DeviceType> void FixGRFLOWWallKokkos<DeviceType>::post_force(int
 
 /* ----------------------------------------------------------------------
    "grflow/wall_contacts" (compute grflow/network): the records of the
-   last contact pass, on the host
+   last contact pass, on the host; "grflow/wall_contacts/kk" (compute
+   grflow/network/kk): the same, the records where they are
 ------------------------------------------------------------------------- */
 
 template <class DeviceType>
 void *FixGRFLOWWallKokkos<DeviceType>::extract(const char *name, int &dim)
 {
+  if (strcmp(name, "grflow/wall_contacts/kk") == 0) {
+    offered_kk.contacts = static_cast<const GRFLOW::WallContacts *>(
+        FixGRFLOWWall::extract("grflow/wall_contacts", dim));
+    offered_kk.records = &k_contact;
+    dim = 0;
+    return &offered_kk;
+  }
   if (strcmp(name, "grflow/wall_contacts") == 0) k_contact.sync_host();
   return FixGRFLOWWall::extract(name, dim);
 }

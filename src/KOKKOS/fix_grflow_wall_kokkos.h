@@ -31,9 +31,20 @@ FixStyle(grflow/wall/kk/host,FixGRFLOWWallKokkos<LMPHostType>);
 #include "kokkos_type.h"
 
 namespace LAMMPS_NS {
+namespace GRFLOW {
+  struct WallContacts;
+}
 
 // the device kernels (fix_grflow_wall_kokkos.cpp)
 template <class DeviceType> struct FixGRFLOWWallKernel;
+
+// extract("grflow/wall_contacts/kk") (compute grflow/network/kk): the wall
+// contacts of extract("grflow/wall_contacts") with the records where the
+// fix keeps them, per atom nwall records of WallContacts::REC_SIZE values
+struct FixGRFLOWWallContactsKokkos {
+  const GRFLOW::WallContacts *contacts;    // nwall, normals, step (its host rows not synced)
+  DAT::tdual_float_2d *records;
+};
 
 template <class DeviceType> class FixGRFLOWWallKokkos : public FixGRFLOWWall, public KokkosBase {
  public:
@@ -64,6 +75,7 @@ template <class DeviceType> class FixGRFLOWWallKokkos : public FixGRFLOWWall, pu
 
  protected:
   FixGRFLOWWallKernel<DeviceType> *kernel;
+  FixGRFLOWWallContactsKokkos offered_kk;
 
   // per atom: the contact histories and records (GRFLOW::FlatWalls'
   // history and contact are the host rows)

@@ -82,6 +82,7 @@ PairGranularGRFLOWKokkos<DeviceType>::PairGranularGRFLOWKokkos(LAMMPS *lmp) :
   datamask_modify = F_MASK | TORQUE_MASK | ENERGY_MASK | VIRIAL_MASK;
 
   neighflag = HALF;
+  computed = false;
   fix_historyKK = nullptr;
   host_list = nullptr;
   host_list_build = -1;
@@ -127,13 +128,14 @@ template <class DeviceType> void PairGranularGRFLOWKokkos<DeviceType>::init_styl
                "sends nothing back from ghost atoms): use 'newton off' or the KOKKOS package "
                "option 'newton off' (-pk kokkos newton off)");
 
-  // compute grflow/network reads this pair style's neighbor list on the
-  // host, which a KOKKOS list does not fill: it would count no contacts
-  for (auto *icompute : modify->get_compute_by_style("^grflow/network"))
+  // the plain compute grflow/network reads this pair style's neighbor
+  // list on the host, which a KOKKOS list does not fill: it would count no
+  // contacts.  Its KOKKOS variant reads them on the device.
+  for (auto *icompute : modify->get_compute_by_style("^grflow/network$"))
     error->all(FLERR,
                "Compute {} (grflow/network) does not work with pair style granular/grflow/kk "
-               "yet (it reads the pair style's neighbor list on the host): use "
-               "granular/grflow for runs with it",
+               "(it reads the pair style's neighbor list on the host): use compute "
+               "grflow/network/kk (-sf kk), or granular/grflow",
                icompute->id);
 
   // on first init, the history fix replaces the FixDummy of the
@@ -295,6 +297,7 @@ template <class DeviceType> void PairGranularGRFLOWKokkos<DeviceType>::compute(i
   // the touch flags change on every call, the springs when updated
   fix_historyKK->k_firstflag.template modify<DeviceType>();
   fix_historyKK->k_firstvalue.template modify<DeviceType>();
+  computed = true;
 
   if (eflag_global) eng_vdwl += ev.evdwl;
   if (vflag_global)

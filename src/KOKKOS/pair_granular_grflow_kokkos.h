@@ -107,8 +107,18 @@ template <class DeviceType> class PairGranularGRFLOWKokkos : public PairGranular
   double single(int, int, int, int, double, double, double, double &) override;
   double memory_usage() override;
 
+  // what the last compute() used (neighbor list, contact history,
+  // coefficients, settings) for compute grflow/network/kk, which finds
+  // the contacts and their forces again; nullptr before the first
+  // compute().  Its atom views may be stale: take those from the atoms.
+  const PairGranularGRFLOWKernel<DeviceType> *contact_data() const
+  {
+    return computed ? &kernel : nullptr;
+  }
+
  protected:
   int neighflag;
+  bool computed;
   PairGranularGRFLOWKernel<DeviceType> kernel;
 
   DAT::tdual_efloat_1d k_eatom;

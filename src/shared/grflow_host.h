@@ -42,6 +42,15 @@
 #include <string>
 #include <vector>
 
+// a small function of the rules that device code (the KOKKOS variants on a
+// GPU) calls too; on the host an ordinary function, inlined as the
+// compiler chooses
+#if defined(__CUDACC__) || defined(__HIPCC__)
+#define GRFLOW_FUNCTION __host__ __device__
+#else
+#define GRFLOW_FUNCTION
+#endif
+
 // the call site of a Host call, as LAMMPS's and LIGGGHTS's FLERR give it
 // (token for token as LAMMPS's pointers.h has it, so that either may come first)
 // clang-format off

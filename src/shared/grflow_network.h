@@ -185,7 +185,8 @@ namespace GRFLOW {
     // a particle-particle contact with unit normal n (from j to i) and
     // force f on i: arm is the sum of the arms (a - delta/2) of the ends
     // inside, ends their number (1 or 2)
-    static void add_contact(double *sums, const double *n, const double *f, double arm, double ends)
+    static GRFLOW_FUNCTION void add_contact(double *sums, const double *n, const double *f,
+                                            double arm, double ends)
     {
       for (int a = 0; a < 3; a++)
         for (int b = 0; b < 3; b++) {
@@ -196,7 +197,8 @@ namespace GRFLOW {
 
     // the stress part of add_contact() alone (the same additions, so the
     // stress sums are the same to the bit with or without the fabric)
-    static void add_contact_stress(double *sums, const double *n, const double *f, double arm)
+    static GRFLOW_FUNCTION void add_contact_stress(double *sums, const double *n, const double *f,
+                                                   double arm)
     {
       for (int a = 0; a < 3; a++)
         for (int b = 0; b < 3; b++) sums[STRESS + 3 * a + b] += arm * n[a] * f[b];
@@ -204,7 +206,8 @@ namespace GRFLOW {
 
     // the sum of the contact law's arms a - delta/2 (the kernel's
     // contact_arm) of the ends use_i, use_j of a contact with overlap delta
-    static double pair_arm(double delta, double radi, double radj, bool use_i, bool use_j)
+    static GRFLOW_FUNCTION double pair_arm(double delta, double radi, double radj, bool use_i,
+                                           bool use_j)
     {
       double arm = 0.0;
       if (use_i) arm += contact_arm(radi, delta);
@@ -216,9 +219,9 @@ namespace GRFLOW {
     // radii radi, radj, counted at the ends use_i, use_j (the ends inside
     // that this processor counts, see count_ends()); with network false
     // its stress only
-    static void add_pair_contact(double *sums, const double *n, const double *f, double delta,
-                                 double radi, double radj, bool use_i, bool use_j,
-                                 bool network = true)
+    static GRFLOW_FUNCTION void add_pair_contact(double *sums, const double *n, const double *f,
+                                                 double delta, double radi, double radj, bool use_i,
+                                                 bool use_j, bool network = true)
     {
       const double arm = pair_arm(delta, radi, radj, use_i, use_j);
       if (!network) {
@@ -232,8 +235,8 @@ namespace GRFLOW {
     // which ends of a listed pair (i owned, j owned or ghost) this
     // processor counts: those inside; with newton off a pair with a ghost
     // is listed by both owners, and each counts only its own particle
-    static void count_ends(bool inside_i, bool inside_j, bool j_owned, bool newton_pair,
-                           bool &use_i, bool &use_j)
+    static GRFLOW_FUNCTION void count_ends(bool inside_i, bool inside_j, bool j_owned,
+                                           bool newton_pair, bool &use_i, bool &use_j)
     {
       use_i = inside_i;
       use_j = inside_j && (j_owned || newton_pair);
@@ -241,18 +244,20 @@ namespace GRFLOW {
 
     // a contact of a particle inside with a flat wall normal to z (nz =
     // +1 below, -1 above): arm a - delta/2, force fw on the particle
-    static void add_wall_contact(double *sums, double nz, const double *fw, double arm)
+    static GRFLOW_FUNCTION void add_wall_contact(double *sums, double nz, const double *fw,
+                                                 double arm)
     {
       add_wall_stress(sums, nz, fw, arm);
       sums[FABRIC + 3 * 2 + 2] += 1.0;
     }
-    static void add_wall_stress(double *sums, double nz, const double *fw, double arm)
+    static GRFLOW_FUNCTION void add_wall_stress(double *sums, double nz, const double *fw,
+                                                double arm)
     {
       for (int b = 0; b < 3; b++) sums[STRESS + 3 * 2 + b] += arm * nz * fw[b];
     }
 
     // a particle inside with c force-bearing contacts
-    static void add_particle(double *sums, int c, int cmax)
+    static GRFLOW_FUNCTION void add_particle(double *sums, int c, int cmax)
     {
       sums[NP] += 1.0;
       if (c == 0) sums[FLOAT] += 1.0;
@@ -287,16 +292,21 @@ namespace GRFLOW {
                           double hi, bool zperiodic, double boxlo, double boxhi, double zprd,
                           double *inside)
     {
-      for (int i = 0; i < nlocal; i++) {
-        double z = x[i][2];
-        if (zperiodic) {
-          if (z < boxlo)
-            z += zprd;
-          else if (z >= boxhi)
-            z -= zprd;
-        }
-        inside[i] = ((mask[i] & groupbit) && z >= lo && z < hi) ? 1.0 : 0.0;
+      for (int i = 0; i < nlocal; i++)
+        inside[i] = in_slab(x[i][2], mask[i], groupbit, lo, hi, zperiodic, boxlo, boxhi, zprd);
+    }
+
+    // the flag of one atom at height z with mask bits mask, as above
+    static GRFLOW_FUNCTION double in_slab(double z, int mask, int groupbit, double lo, double hi,
+                                          bool zperiodic, double boxlo, double boxhi, double zprd)
+    {
+      if (zperiodic) {
+        if (z < boxlo)
+          z += zprd;
+        else if (z >= boxhi)
+          z -= zprd;
       }
+      return ((mask & groupbit) && z >= lo && z < hi) ? 1.0 : 0.0;
     }
   };
 

@@ -22,7 +22,12 @@ reason:
   spring keeps its sign), a sphere that touches another again (new
   springs), coefficients changed between runs and by fix adapt;
 - a packing sheared between fix grflow/wall walls (the host fix beside the
-  KOKKOS pair style), and compute grflow/network refused with an error;
+  KOKKOS pair style), and the plain compute grflow/network refused with an
+  error that names its KOKKOS variant;
+- compute grflow/network/kk against compute grflow/network (the whole
+  cell and a slab) at a state with loaded springs and after 2000 sheared
+  steps, on 1 and 2 ranks and with threads; with the walls' contacts from
+  fix grflow/wall/kk; its errors (a region, a plain pair style);
 - fix grflow/wall/kk (whose contacts call the same functions of
   grflow_wall_pass.h) on the packing of tests/decks/wall_packing.lmp:
   forces, torques, the per-atom array, the walls' per-atom virial, the
@@ -1055,7 +1060,7 @@ boundary p p f
 newton off
 comm_modify vel yes
 read_data {data}
-suffix off
+{suffix}
 pair_style granular/grflow
 pair_coeff * * 1.0e6 1.15
 neighbor 0.2e-3 bin
@@ -1066,7 +1071,7 @@ fix nve all nve/sphere
 fix_modify w wall hi vel 0.2 0.0 0.0
 variable zlo equal f_w[4]
 variable zhi equal f_w[10]
-compute net all grflow/network zlimits v_zlo v_zhi
+compute net all grflow/network zlimits v_zlo v_zhi slab 1.0
 compute nets all grflow/network zlimits 2.0e-3 6.0e-3
 thermo_style custom step c_net[1] c_nets[1]
 run 0
@@ -1087,7 +1092,8 @@ def test_compute_grflow_network_with_kokkos_wall(wall_packing):
     for kk in (False, True):
         deck = work / f"in.network_wall_{kk}"
         deck.write_text(NETWORK_WALL_DECK.format(
-            data=work / "wall.data", wall="grflow/wall/kk" if kk else "grflow/wall", net=net))
+            data=work / "wall.data", wall="grflow/wall/kk" if kk else "grflow/wall", net=net,
+            suffix="suffix off"))
         proc = run(["-in", str(deck)], work, kokkos=kk, pair_kk=False, wall_kk=kk)
         out[kk] = proc.stdout
     n0 = {kk: values(out[kk], "NET0") for kk in out}
@@ -1104,18 +1110,179 @@ def test_compute_grflow_network_with_kokkos_wall(wall_packing):
     assert d1 < 1e-6
 
 
-def test_compute_grflow_network_is_refused(loaded):
-    """compute grflow/network reads the pair style's neighbor list on the host;
-    with the KOKKOS list it would count nothing: an error, not zeros"""
+def test_plain_compute_grflow_network_is_refused(loaded):
+    """the plain compute grflow/network reads the pair style's neighbor list
+    on the host; with the KOKKOS list it would count nothing: an error that
+    names its KOKKOS variant, not zeros"""
     work, files = loaded
     deck = work / "in.network"
     deck.write_text(f"newton off\nread_restart {files['default']}\ncomm_modify vel yes\n"
-                    "fix nve all nve/sphere\ncompute net all grflow/network\n"
-                    "thermo_style custom step c_net[14]\nrun 0\n")
+                    "fix nve all nve/sphere\nsuffix off\ncompute net all grflow/network\n"
+                    "suffix on\nthermo_style custom step c_net[14]\nrun 0\n")
     proc = run(["-in", str(deck)], work, kokkos=True, check=False)
     text = proc.stdout + proc.stderr
     assert proc.returncode != 0, text[-2000:]
     assert "does not work with pair style granular/grflow/kk" in text, text[-2000:]
+    assert "grflow/network/kk" in text, text[-2000:]
+
+
+# ---------------------------------------------------------------------------
+# compute grflow/network/kk against compute grflow/network
+
+# the whole periodic cell, and a slab of half its height (atoms in and out,
+# contacts with one end inside, images wrapped in z) with a short histogram
+NETWORK_DECK = """newton off
+read_restart {restart}
+comm_modify vel yes
+neighbor 0.2e-3 bin
+neigh_modify delay 0 every 1 check yes
+fix nve all nve/sphere
+compute net all grflow/network
+compute nets all grflow/network slab 0.5 cmax 6 shear xz
+info computes
+thermo_style custom step c_net[14] c_nets[14]
+run 0
+print "NET0 {net}"
+print "NETS0 {nets}"
+fix shear all deform 1 x trate -40 y trate 20 z trate 20 remap x units box
+run {steps}
+print "NET1 {net}"
+print "NETS1 {nets}"
+"""
+
+NETWORK_STEPS = 2000
+# 1-based entries of the vector (GRFLOW::NetworkLayout): the stress sums'
+# (stress, p, tau, q, |s|, r_u), the counts' (particles, floaters,
+# contacts, z_g, z), the fabric's (a_c, sign, tensor), volume, P_c
+STRESS = list(range(1, 12))
+COUNTS = list(range(12, 17))
+FABRIC = list(range(17, 25))
+
+
+def network_vectors(loaded, kokkos, nprocs=1, threads=None):
+    work, files = loaded
+    tag = f"{kokkos}_{nprocs}_{threads}"
+    deck = work / f"in.network_{tag}"
+    net = " ".join(f"$(c_net[{k}]:%.17g)" for k in range(1, 39))
+    nets = " ".join(f"$(c_nets[{k}]:%.17g)" for k in range(1, 33))
+    deck.write_text(NETWORK_DECK.format(restart=files["default"], steps=NETWORK_STEPS,
+                                        net=net, nets=nets))
+    proc = run(["-in", str(deck)], work, kokkos=kokkos, nprocs=nprocs, threads=threads)
+    # -sf kk chose the KOKKOS variant for both (info computes lists them)
+    styles = re.findall(r"Compute\[ *\d+\]: +nets?, +style = (\S+),", proc.stdout)
+    assert styles == ["grflow/network/kk" if kokkos else "grflow/network"] * 2, proc.stdout[-2000:]
+    return {k: values(proc.stdout, k) for k in ("NET0", "NETS0", "NET1", "NETS1")}
+
+
+@pytest.fixture(scope="module")
+def network_reference(loaded):
+    return network_vectors(loaded, False)
+
+
+def part_diff(a, b, entries):
+    a = np.array([a[k - 1] for k in entries])
+    b = np.array([b[k - 1] for k in entries])
+    return np.abs(a - b).max() / max(np.abs(b).max(), 1e-300)
+
+
+NETWORK_VARIANTS = [(1, None), (2, None)] + ([(1, THREADS)] if THREADS > 1 else [])
+
+
+@pytest.mark.parametrize("nprocs,threads", NETWORK_VARIANTS)
+def test_compute_network_kokkos(loaded, network_reference, nprocs, threads):
+    """compute grflow/network/kk with granular/grflow/kk against compute
+    grflow/network with granular/grflow: the whole cell and a slab, at a
+    state with loaded springs and after 2000 sheared steps"""
+    ref = network_reference
+    kk = network_vectors(loaded, True, nprocs=nprocs, threads=threads)
+    for tag in ("NET0", "NETS0"):
+        a, b = kk[tag], ref[tag]
+        assert len(a) == len(b)
+        ds, df = part_diff(a, b, STRESS), part_diff(a, b, FABRIC)
+        print(f"[ measured ] {tag} np={nprocs} threads={threads}: stress {ds:.2e}, "
+              f"fabric {df:.2e}")
+        # at the same state the same contacts with the same forces, summed
+        # in another order (a device reduction; 2 ranks): round-off, measured
+        # up to 1e-13 (the fabric tensor's anisotropy is a difference of its
+        # sums, which magnifies theirs); a contact missed or counted twice
+        # changes the sums by about 1e-3
+        assert ds < 1e-12
+        assert df < 1e-12
+        # counts are sums of ones: exact in any order; the same for
+        # everything derived from them alone (z_g, z, volume, P_c)
+        counted = COUNTS + list(range(25, len(b) + 1))
+        assert np.array_equal(a[[k - 1 for k in counted]], b[[k - 1 for k in counted]]), \
+            (a, b)
+        assert b[13] > 0    # contacts counted
+    for tag in ("NET1", "NETS1"):
+        a, b = kk[tag], ref[tag]
+        ds, dc = part_diff(a, b, STRESS), part_diff(a, b, COUNTS)
+        print(f"[ measured ] {tag} np={nprocs} threads={threads} after {NETWORK_STEPS} steps: "
+              f"stress {ds:.2e}, counts {dc:.2e}")
+        # after the run the states differ by the trajectories' round-off
+        # (test_sheared_trajectory: up to 7e-10 in x over 5000 steps); the
+        # threshold of the positions there, halfway on a log scale between
+        # that and a lost spring
+        assert ds < 1e-6
+        assert dc < 1e-6
+
+
+def test_compute_network_kokkos_errors(loaded):
+    """compute grflow/network/kk needs granular/grflow/kk and a slab"""
+    work, files = loaded
+    cases = {
+        "region": ("region box block INF INF INF INF INF INF\n"
+                   "compute net all grflow/network region box\n", "takes no region keyword"),
+        "plain pair": ("suffix off\npair_style granular/grflow\npair_coeff * * 1.0e6 1.15\n"
+                       "suffix on\ncompute net all grflow/network\n",
+                       "requires pair style granular/grflow/kk"),
+    }
+    for name, (lines, message) in cases.items():
+        deck = work / f"in.network_error_{name.replace(' ', '_')}"
+        deck.write_text(f"newton off\nread_restart {files['default']}\ncomm_modify vel yes\n"
+                        f"fix nve all nve/sphere\n{lines}"
+                        "thermo_style custom step c_net[14]\nrun 0\n")
+        proc = run(["-in", str(deck)], work, kokkos=True, check=False, pair_kk=False)
+        text = proc.stdout + proc.stderr
+        assert proc.returncode != 0, text[-2000:]
+        assert message in text, (name, text[-2000:])
+
+
+def test_compute_network_kokkos_with_kokkos_walls(wall_packing):
+    """compute grflow/network/kk with granular/grflow/kk, fix grflow/wall/kk
+    and fix nve/sphere/kk (the deck of the test above under -sf kk) against
+    the same deck with the plain styles: the wall contacts come from the
+    wall fix's records on the device"""
+    work, restart = wall_packing
+    net = " ".join(f"$(c_{c}[{k}]:%.17g)" for c in ("net", "nets") for k in range(1, 27))
+    out = {}
+    for kk in (False, True):
+        deck = work / f"in.network_kkwall_{kk}"
+        text = NETWORK_WALL_DECK.format(data=work / "wall.data", wall="grflow/wall", net=net,
+                                        suffix="")
+        deck.write_text(text.replace("run 0", "info computes\nrun 0", 1))
+        proc = run(["-in", str(deck)], work, kokkos=kk, wall_kk=kk)
+        out[kk] = proc.stdout
+    styles = re.findall(r"Compute\[ *\d+\]: +nets?, +style = (\S+),", out[True])
+    assert styles == ["grflow/network/kk"] * 2, out[True][-2000:]
+    whole = list(range(1, 27))
+    for tag in ("NET0", "NET1"):
+        a, b = values(out[True], tag), values(out[False], tag)
+        parts = {"stress": STRESS, "fabric": FABRIC,
+                 "slab stress": [k + 26 for k in STRESS]}
+        d = {name: part_diff(a, b, entries) for name, entries in parts.items()}
+        print(f"[ measured ] {tag} all kk against all plain: " +
+              ", ".join(f"{name} {v:.2e}" for name, v in d.items()))
+        # the whole cell's stress holds the wall contacts: a wall record
+        # missing or read stale changes it at O(1)
+        assert b[COUNTS[0] - 1] > 0 and b[0] != 0.0
+        if tag == "NET0":
+            # thresholds and reasons of test_compute_network_kokkos
+            assert max(d.values()) < 1e-12
+            counted = [k for k in whole if k not in STRESS + FABRIC]
+            assert np.array_equal(a[[k - 1 for k in counted]], b[[k - 1 for k in counted]])
+        else:
+            assert max(d.values()) < 1e-6
 
 
 # ---------------------------------------------------------------------------
