@@ -29,6 +29,7 @@
 
 #include "grflow_checksum.h"
 
+#include "atom_masks.h"
 #include "comm.h"
 #include "error.h"
 #include "output.h"
@@ -46,6 +47,10 @@ FixGRFLOWChecksum::FixGRFLOWChecksum(LAMMPS *lmp, int narg, char **arg) : Fix(lm
   if (narg > 3)
     error->all(FLERR, "Illegal fix grflow/checksum command: unexpected argument '{}'", arg[3]);
   nevery = 1;
+  // it reads no atom data: with the KOKKOS package nothing is copied to
+  // the host for it on every step
+  datamask_read = EMPTY_MASK;
+  datamask_modify = EMPTY_MASK;
   // a restart write before this fix existed is not its business
   done = output->last_restart;
 }

@@ -55,8 +55,8 @@ using GRFLOW::StressServo;
 /* ---------------------------------------------------------------------- */
 
 FixGRFLOWCompress::FixGRFLOWCompress(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), settings(nullptr), servo(nullptr), ivar_elastic(-1), warned_energy(false),
-    wall(nullptr), network(nullptr), pe(nullptr), vsolid(0.0)
+    Fix(lmp, narg, arg), dt(0.0), settings(nullptr), servo(nullptr), ivar_elastic(-1),
+    warned_energy(false), wall(nullptr), network(nullptr), pe(nullptr), vsolid(0.0)
 {
   settings = new GRFLOW::CompressSettings;
   servo = new GRFLOW::StressServo;
@@ -208,8 +208,7 @@ void FixGRFLOWCompress::measure()
   servo->set_stresses(*settings, network->vector);
 
   // kinetic energy, translational and rotational, of the fix group
-  double kelocal = GRFLOW::kinetic_sum(atom->nlocal, atom->mask, groupbit, atom->v, atom->omega,
-                                       atom->rmass, atom->radius);
+  double kelocal = kinetic_local();
   double ke;
   MPI_Allreduce(&kelocal, &ke, 1, MPI_DOUBLE, MPI_SUM, world);
   servo->ke = GRFLOW::kinetic_energy(ke, force->mvv2e);
@@ -239,16 +238,35 @@ void FixGRFLOWCompress::drive_walls()
 void FixGRFLOWCompress::deform_box()
 {
   if (!servo->deforms()) return;
+  remap_group(true);
+  for (int a = 0; a < 2; a++) servo->scale(a, dt, domain->boxlo[a], domain->boxhi[a]);
+  domain->set_global_box();
+  domain->set_local_box();
+  remap_group(false);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixGRFLOWCompress::remap_group(bool to_lamda)
+{
   double **x = atom->x;
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
   for (int i = 0; i < nlocal; i++)
-    if (mask[i] & groupbit) domain->x2lamda(x[i], x[i]);
-  for (int a = 0; a < 2; a++) servo->scale(a, dt, domain->boxlo[a], domain->boxhi[a]);
-  domain->set_global_box();
-  domain->set_local_box();
-  for (int i = 0; i < nlocal; i++)
-    if (mask[i] & groupbit) domain->lamda2x(x[i], x[i]);
+    if (mask[i] & groupbit) {
+      if (to_lamda)
+        domain->x2lamda(x[i], x[i]);
+      else
+        domain->lamda2x(x[i], x[i]);
+    }
+}
+
+/* ---------------------------------------------------------------------- */
+
+double FixGRFLOWCompress::kinetic_local()
+{
+  return GRFLOW::kinetic_sum(atom->nlocal, atom->mask, groupbit, atom->v, atom->omega, atom->rmass,
+                             atom->radius);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -43,6 +43,15 @@ class FixGRFLOWCompress : public Fix {
   void write_restart(FILE *) override;
   void restart(char *) override;
 
+ protected:
+  double dt;
+
+  // this processor's sum of kinetic_term() over the group, and the
+  // group's positions to and from lamda coordinates around the box change
+  // (the KOKKOS variant does both on the device)
+  virtual double kinetic_local();
+  virtual void remap_group(bool to_lamda);
+
  private:
   GRFLOW::CompressSettings *settings;    // the arguments
   GRFLOW::StressServo *servo;            // rates, gain factors (restart), last measurements
@@ -52,7 +61,6 @@ class FixGRFLOWCompress : public Fix {
   class FixGRFLOWWall *wall;
   class ComputeGRFLOWNetwork *network;
   class Compute *pe;
-  double dt;
   double vsolid;
 
   void measure();

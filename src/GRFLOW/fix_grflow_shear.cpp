@@ -50,8 +50,8 @@ using GRFLOW::ShearProtocol;
 /* ---------------------------------------------------------------------- */
 
 FixGRFLOWShear::FixGRFLOWShear(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), settings(nullptr), state(nullptr), progress(nullptr), wall(nullptr),
-    network(nullptr), iglue(-1), gluebit(0)
+    Fix(lmp, narg, arg), iglue(-1), gluebit(0), dt(0.0), settings(nullptr), state(nullptr),
+    progress(nullptr), wall(nullptr), network(nullptr)
 {
   settings = new GRFLOW::ShearSettings;
   state = new GRFLOW::ShearProtocol;
@@ -143,7 +143,7 @@ void FixGRFLOWShear::drive_wall()
   wall->cell().set_velocity(FlatWalls::HI, vw, 0.0, 0.0);
   // the glued layer takes the wall velocity at once, so that between steps
   // (output, the setup of a next run) it moves with the wall as well
-  if (iglue >= 0) GRFLOW::glue_layer(atom->nlocal, atom->mask, gluebit, vw, atom->v, atom->omega);
+  if (iglue >= 0) glue(vw, false);
 }
 
 /* ----------------------------------------------------------------------
@@ -152,8 +152,17 @@ void FixGRFLOWShear::drive_wall()
 
 void FixGRFLOWShear::initial_integrate(int /*vflag*/)
 {
-  GRFLOW::glue_layer(atom->nlocal, atom->mask, gluebit, state->velocity(*settings), atom->v,
-                     atom->omega, dt, atom->x);
+  glue(state->velocity(*settings), true);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixGRFLOWShear::glue(double vw, bool step)
+{
+  if (step)
+    GRFLOW::glue_layer(atom->nlocal, atom->mask, gluebit, vw, atom->v, atom->omega, dt, atom->x);
+  else
+    GRFLOW::glue_layer(atom->nlocal, atom->mask, gluebit, vw, atom->v, atom->omega);
 }
 
 /* ---------------------------------------------------------------------- */

@@ -45,14 +45,21 @@ class FixGRFLOWShear : public Fix {
   void write_restart(FILE *) override;
   void restart(char *) override;
 
+ protected:
+  int iglue, gluebit;
+  double dt;
+
+  // the glued layer moves with the top wall at velocity vw: velocities
+  // and spins, and with step its positions by one time step (the KOKKOS
+  // variant does it on the device)
+  virtual void glue(double vw, bool step);
+
  private:
   GRFLOW::ShearSettings *settings;    // the arguments
   GRFLOW::ShearProtocol *state;       // direction, reversals, p0, N, ... (restart)
   GRFLOW::ShearProgress *progress;    // the progress lines' clock
   class FixGRFLOWWall *wall;
   class ComputeGRFLOWNetwork *network;
-  int iglue, gluebit;
-  double dt;
 
   void check(bool decide = true);
   void drive_wall();

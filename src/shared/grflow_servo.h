@@ -315,6 +315,15 @@ namespace GRFLOW {
      total), and the sum of radius^3 (solid_volume() completes it)
   ------------------------------------------------------------------------- */
 
+  // twice the kinetic energy of one sphere, translation and rotation
+  static GRFLOW_FUNCTION double kinetic_term(const double *v, const double *omega, double rmass,
+                                             double radius)
+  {
+    const double vv = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+    const double ww = omega[0] * omega[0] + omega[1] * omega[1] + omega[2] * omega[2];
+    return rmass * (vv + 0.4 * radius * radius * ww);
+  }
+
   static inline double kinetic_sum(int nlocal, const int *mask, int bit, const double *const *v,
                                    const double *const *omega, const double *rmass,
                                    const double *radius)
@@ -322,10 +331,7 @@ namespace GRFLOW {
     double sum = 0.0;
     for (int i = 0; i < nlocal; i++) {
       if (!(mask[i] & bit)) continue;
-      const double vv = v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2];
-      const double ww =
-          omega[i][0] * omega[i][0] + omega[i][1] * omega[i][1] + omega[i][2] * omega[i][2];
-      sum += rmass[i] * (vv + 0.4 * radius[i] * radius[i] * ww);
+      sum += kinetic_term(v[i], omega[i], rmass[i], radius[i]);
     }
     return sum;
   }

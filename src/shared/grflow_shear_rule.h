@@ -324,14 +324,19 @@ namespace GRFLOW {
      x += dt vw
   ------------------------------------------------------------------------- */
 
+  static GRFLOW_FUNCTION void glue_atom(double vw, double *v, double *omega)
+  {
+    v[0] = vw;
+    v[1] = v[2] = 0.0;
+    omega[0] = omega[1] = omega[2] = 0.0;
+  }
+
   static inline void glue_layer(int nlocal, const int *mask, int bit, double vw, double **v,
                                 double **omega, double dt = 0.0, double **x = nullptr)
   {
     for (int i = 0; i < nlocal; i++) {
       if (!(mask[i] & bit)) continue;
-      v[i][0] = vw;
-      v[i][1] = v[i][2] = 0.0;
-      omega[i][0] = omega[i][1] = omega[i][2] = 0.0;
+      glue_atom(vw, v[i], omega[i]);
       if (x) x[i][0] += dt * vw;
     }
   }
