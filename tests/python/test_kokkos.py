@@ -33,7 +33,9 @@ reason:
   plain styles: the preparation's rows before the packing jams, and its
   e, z_g, p within the chaotic spread; the first 2000 steps of the shear
   stage from one prepared sample, every column of the series, on 1 and 2
-  ranks and with threads; a KOKKOS shear stage killed and resumed;
+  ranks and with threads; a KOKKOS shear stage killed and resumed; the
+  whole protocol in one process (preparation, then shear from its restart
+  file) into liquefaction;
 - fix grflow/wall/kk (whose contacts call the same functions of
   grflow_wall_pass.h) on the packing of tests/decks/wall_packing.lmp:
   forces, torques, the per-atom array, the walls' per-atom virial, the
@@ -1375,6 +1377,20 @@ def test_deck_preparation_kokkos(quick_prep, tmp_path):
     assert abs(kk["e"] - cpu["e"]) < 0.02
     assert abs(kk["z_g"] - cpu["z_g"]) < 0.15
     assert abs(kk["p"] / cpu["p"] - 1.0) < 0.1
+
+
+def test_deck_whole_protocol_kokkos(tmp_path):
+    """the whole protocol in one process with -sf kk (preparation, then the
+    shear stage from its restart file, into liquefaction), on 500 spheres:
+    the README's command for a device"""
+    out = tmp_path / "whole"
+    proc = run_deck(out, True, N=500, n_post=1)
+    events = np.loadtxt(out / "events.txt", ndmin=2)
+    n_il = events[-1, 5]
+    print(f"[ measured ] KOKKOS protocol on 500 spheres: N_IL {n_il:g}, "
+          f"{len(events)} events")
+    assert n_il > 0 and events[-1, 4] - n_il >= 1.0    # liquefied, one cycle after
+    assert "ERROR" not in proc.stdout
 
 
 def shear_from(prep, out):
