@@ -28,6 +28,7 @@
 #   lmp         the LAMMPS binary                                          lmp
 #   study       the table command (analysis/, scripts/setup.sh)   grflow-study
 #   np          MPI ranks per run (1: no mpirun)                             1
+#   gpus, jobs_per_gpu, kokkos   runs on GPUs (KOKKOS styles; common.smk)   0, 1
 # A shear run killed (or a session ended) resumes from its newest restart
 # file that verifies when the workflow is run again (the decks' -var
 # resume yes); the preparations and finished runs are kept.  Every run is

@@ -19,6 +19,7 @@
 #   curve       the curve command (analysis/, scripts/setup.sh)      grflow-curve
 #   np          MPI ranks per run (1: no mpirun)                               1
 #   vars        more -var settings for every run, e.g. "N 500 v_x 0.02"       ""
+#   gpus, jobs_per_gpu, kokkos   runs on GPUs (KOKKOS styles; common.smk)   0, 1
 # Every run is a normal run directory (OUT/seed<S>/csr<C>/) that
 # grflow-figures understands; OUT/curve.{png,json,md} is the
 # result.  snakemake reruns only what is missing or failed; --summary lists

@@ -1483,6 +1483,48 @@ def test_deck_resume_kokkos(quick_prep, tmp_path):
 
 
 # ---------------------------------------------------------------------------
+# the workflows on GPUs (gpus=G jobs_per_gpu=R): here on the CPU backend,
+# with the KOKKOS switches of CPU threads
+
+def test_workflow_gpu_option(tmp_path):
+    """a tiny resistance-curve campaign with gpus=1 jobs_per_gpu=2: every
+    run uses the KOKKOS styles through workflows/gpu_slot.sh, its two shear
+    runs at once on the one "GPU" (two slots)"""
+    import workflowrun
+    if workflowrun.SNAKEMAKE is None:
+        pytest.skip("needs snakemake (Debian)")
+    smk = os.path.join(INPUTS, "..", "workflows", "resistance_curve.smk")
+    out = tmp_path / "curve"
+    kokkos = " ".join(kk_args())
+    config = ["--config", "csr=[0.6,0.05]", "seeds=[1]", f"out={out}", f"lmp={LMP_KOKKOS}",
+              "vars=N 300", "max_cycles=5", "gpus=1", "jobs_per_gpu=2", f"kokkos={kokkos}"]
+    env_slots = tmp_path / "slots"
+    workflowrun.ENV["GRFLOW_GPU_SLOTS"] = str(env_slots)
+    try:
+        workflowrun.snakemake(smk, ["--cores", "2"] + config, tmp_path)
+    finally:
+        del workflowrun.ENV["GRFLOW_GPU_SLOTS"]
+    c = json.loads((out / "curve.json").read_text())
+    runs = {r["csr"]: r for r in c["runs"]}
+    assert runs[0.6]["liquefied"] and runs[0.6]["N_IL"] > 0
+    assert not runs[0.05]["liquefied"]
+    # the KOKKOS styles ran (the pair style's neighbor list in the logs)
+    for d, log in (("prep", "log.prep.lammps"), ("csr0.6", "log.shear.lammps"),
+                   ("csr0.05", "log.shear.lammps")):
+        assert "pair granular/grflow/kk" in (out / "seed1" / d / log).read_text(), d
+    assert sorted(p.name for p in env_slots.iterdir()) == ["gpu0.slot0", "gpu0.slot1"]
+
+
+def test_gpu_slot_bad_arguments(tmp_path):
+    """workflows/gpu_slot.sh refuses counts that are not integers >= 1"""
+    script = os.path.join(INPUTS, "..", "workflows", "gpu_slot.sh")
+    for args in (["0", "1"], ["1", "x"]):
+        proc = subprocess.run(["bash", script] + args + ["true"], capture_output=True, text=True,
+                              env=dict(os.environ, GRFLOW_GPU_SLOTS=str(tmp_path)))
+        assert proc.returncode == 2 and "integers >= 1" in proc.stderr
+
+
+# ---------------------------------------------------------------------------
 # closed forms
 
 D, RHO, V0 = 1.0e-3, 2650.0, 0.1
