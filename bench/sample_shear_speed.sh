@@ -11,8 +11,12 @@
 # overestimated the paper case's 2-rank time by 30% (doc/studies/shear-stage-sampling.md).
 # Check the sum for the run's own rank count against its measured time.
 #   bash bench/sample_shear_speed.sh RUNDIR [NSTEPS [VARIANT ...]]   # default 20000
-# VARIANT: "NAME|NP|MPIARGS" (MPIARGS: extra mpirun arguments, for NP > 1);
-# default "1 core|1|" "2 ranks|2|".  The variants run alike from the same
+# VARIANT: "NAME|NP|MPIARGS[|LMPARGS[|LMP]]" (MPIARGS: extra mpirun
+# arguments, for NP > 1; LMPARGS: extra lmp arguments; LMP: another lmp
+# than the default); default "1 core|1|" "2 ranks|2|".  The KOKKOS styles
+# on a GPU against 2 ranks of the plain ones, e.g.:
+#   bash bench/sample_shear_speed.sh runs/case 20000 "2 ranks|2|" \
+#     "gpu|1||-k on g 1 -sf kk -pk kokkos newton off neigh half -var newton_pair off|build-kokkos-cuda/lmp"  The variants run alike from the same
 # file (the transport does not change the arithmetic), so their sums
 # compare the whole stage, weighted by where its steps are.  Example, Open
 # MPI's single-copy transfers off against the default, 2 rounds:
@@ -64,7 +68,7 @@ done
 # steps per second of NSTEPS steps from step K on NP ranks (MPIARGS: extra
 # mpirun arguments)
 sample() {
-  local k=$1 np=$2 mpiargs=$3 dir=$out/sample resume=yes
+  local k=$1 np=$2 mpiargs=$3 lmpargs=$4 bin=${5:-$lmp} dir=$out/sample resume=yes
   rm -rf "$dir" && mkdir -p "$dir/snapshots"
   # the file and its checksum file (the deck resumes only from a file that verifies)
   local file=shear.restart.$k
@@ -77,9 +81,11 @@ sample() {
   local extra=() v
   read -r -a v <<< "${VARS:-}"
   for ((j = 0; j + 1 < ${#v[@]}; j += 2)); do extra+=(-var "${v[$j]}" "${v[$((j + 1))]}"); done
-  local cmd=("$lmp")
+  local cmd=("$bin")
   # shellcheck disable=SC2206
-  if [ "$np" -gt 1 ]; then cmd=(mpirun --allow-run-as-root --oversubscribe -np "$np" $mpiargs "$lmp"); fi
+  if [ "$np" -gt 1 ]; then cmd=(mpirun --allow-run-as-root --oversubscribe -np "$np" $mpiargs "$bin"); fi
+  # shellcheck disable=SC2206
+  cmd+=($lmpargs)
   OMP_NUM_THREADS=1 "${cmd[@]}" -in "$inputs/cyclic_shear.lmp" -var inputs "$inputs" \
     -var stage shear -var resume "$resume" -var outdir "$dir" -var max_steps $((k + nsteps)) \
     "${extra[@]}" -log "$dir/log.driver.lammps" -screen none
@@ -108,8 +114,8 @@ for round in $(seq 1 "$rounds"); do
     [ $((i + 1)) -lt ${#sel[@]} ] && next=${sel[$((i + 1))]}
     rates=()
     for j in "${order[@]}"; do
-      IFS='|' read -r _ np mpiargs <<< "${variants[$j]}"
-      rates[$j]=$(sample "$k" "$np" "${mpiargs:-}")
+      IFS='|' read -r _ np mpiargs lmpargs bin <<< "${variants[$j]}"
+      rates[$j]=$(sample "$k" "$np" "${mpiargs:-}" "${lmpargs:-}" "${bin:-}")
     done
     line=$(printf "%5d %9d " "$round" "$k")
     for j in "${!variants[@]}"; do

@@ -1,14 +1,16 @@
 #!/usr/bin/env bash
-# The GPU check of granular/grflow/kk and fix grflow/wall/kk, for one loan
-# of a GPU machine (one NVIDIA H100 or H200, CUDA 13, no internet, at most
-# 10 minutes a command): build LAMMPS with GRFLOW and KOKKOS for CUDA from a
-# carried tarball, run the KOKKOS tests on the GPU (both styles, against
-# their plain versions on the host), and time granular/grflow/kk against
-# gran/hooke/history/kk on the jammed packing tiled to 8000, 64000 and
-# 512000 spheres (the benchmark has no walls).
+# The GPU check of GRFLOW's KOKKOS styles, for loans of a GPU machine (one
+# NVIDIA H100 or H200, CUDA 13, no internet, at most 10 minutes a command):
+# build LAMMPS with GRFLOW and KOKKOS for CUDA from a carried tarball, run
+# the KOKKOS tests on the GPU (against the plain styles on the host), time
+# granular/grflow/kk against gran/hooke/history/kk on the jammed packing
+# tiled to 8000, 64000 and 512000 spheres (the benchmark has no walls),
+# and time the protocol deck itself: its shear stage with -sf kk against 2
+# MPI ranks of the plain styles, sampled at the restart files of a carried
+# run, and R concurrent runs on the one GPU (campaigns).
 #
 #   scripts/gpu-check.sh pack KOKKOS [CARRY]      here, before the loan
-#   scripts/gpu-check.sh build|test|bench|all [CARRY]   on the GPU machine
+#   scripts/gpu-check.sh build|test|bench|deck|campaign|all [CARRY]   on the GPU machine
 #
 # pack   makes CARRY (default build-gpu-carry/carry.tar.xz, git-ignored): the
 #        LAMMPS 4Feb2025 source that the build needs (src/ and src/fmt/, the
@@ -27,7 +29,19 @@
 #        against the plain styles of the same lmp: granular/grflow/kk and
 #        fix grflow/wall/kk (-sf kk chooses both)
 # bench  bench/kokkos_bench.sh, TILES="1 2 4" (8000, 64000, 512000 spheres)
-# all    build, test and bench
+# deck   bench/sample_shear_speed.sh on the carried run (pack with RUN=DIR,
+#        a run directory of the decks, e.g. the paper case's; EVERY=K
+#        carries every K-th of its restart files): the shear stage's
+#        steps/s at each restart file, "2 ranks" of the plain styles and
+#        "gpu" (-sf kk), and the whole stage's time estimated from them;
+#        DECK_NSTEPS steps per sample (default 20000), VARS the run's own
+#        -var settings
+# campaign  bench/kokkos_campaign.sh: R = RS (default "1 2 4 8") runs of
+#        the carried run's shear stage at once on the GPU, CAMPAIGN_NSTEPS
+#        steps each (default 20000), from its prep.restart (jammed) and from
+#        its first restart file after initial liquefaction
+# all    build, test, bench, deck and campaign (more than one loan: run
+#        them one or two at a time)
 #
 # On the device machine (run from the repository root there):
 #   scripts/gpu-check.sh build      (about 6-8 minutes on 16 cores)
@@ -39,7 +53,7 @@
 # TILES, NSTEPS, NWARM, NSTEPS_<n> (bench; bench/kokkos_bench.sh).
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd -P)
-phase=${1:?usage: gpu-check.sh pack KOKKOS [CARRY] | build|test|bench|all [CARRY]}
+phase=${1:?usage: gpu-check.sh pack KOKKOS [CARRY] | build|test|bench|deck|campaign|all [CARRY]}
 shift
 work=$top/build-gpu
 lmp=$work/lammps-cuda/lmp
@@ -80,6 +94,26 @@ pack)
   fi
   cp -p "$packing" "$stage/packing.data"
   rm -rf "$stage/prep"
+  # a run of the decks for the deck and campaign phases: its prepared
+  # sample, every EVERY-th shear restart file (with checksum files), the
+  # series, events and logs that the samplers read
+  if [ -n "${RUN:-}" ]; then
+    run=$(realpath "$RUN")
+    [ -f "$run/prep.restart" ] || { echo "ERROR: RUN=$RUN has no prep.restart" >&2; exit 1; }
+    mkdir -p "$stage/run"
+    for f in prep.restart prep.restart.cksum prep.json series.txt events.txt log.shear.lammps; do
+      [ -f "$run/$f" ] && cp -p "$run/$f" "$stage/run/"
+    done
+    i=0
+    for k in $(ls "$run" | sed -n 's/^shear\.restart\.\([0-9]*\)$/\1/p' | sort -n); do
+      if [ $((i % ${EVERY:-1})) -eq 0 ]; then
+        cp -p "$run/shear.restart.$k" "$stage/run/"
+        [ -f "$run/shear.restart.$k.cksum" ] && cp -p "$run/shear.restart.$k.cksum" "$stage/run/"
+      fi
+      i=$((i + 1))
+    done
+    echo "carried run $run: $(ls "$stage/run" | grep -c '^shear\.restart\.[0-9]*$') restart files"
+  fi
   (cd "$stage" && find . -type f ! -name MANIFEST -print0 | LC_ALL=C sort -z | xargs -0 sha256sum > MANIFEST)
   tar -C "$stage" -cJf "$carry.tmp" .
   mv "$carry.tmp" "$carry"
@@ -154,14 +188,53 @@ bench)
   keep "$work/bench"
   ;;
 
+deck)
+  [ -x "$lmp" ] || { echo "ERROR: no $lmp: run gpu-check.sh build first" >&2; exit 1; }
+  [ -d "$work/src/run" ] || { echo "ERROR: no run in the carry (gpu-check.sh pack with RUN=DIR)" >&2; exit 1; }
+  start=$SECONDS
+  mkdir -p "$work/deck"
+  kk=${KK_DECK:-"-k on g 1 -sf kk -pk kokkos newton off neigh half -var newton_pair off"}
+  LMP=$lmp OUT=$work/deck/sample VARS=${VARS:-} \
+    bash "$top/bench/sample_shear_speed.sh" "$work/src/run" "${DECK_NSTEPS:-20000}" \
+      "2 ranks|2|" "gpu|1||$kk" | tee "$work/deck/summary.txt"
+  echo "gpu-check deck: $(( SECONDS - start )) s"
+  nvidia-smi > "$work/deck/nvidia-smi.txt" 2>&1 || true
+  keep "$work/deck/summary.txt" "$work/deck/nvidia-smi.txt"
+  ;;
+
+campaign)
+  [ -x "$lmp" ] || { echo "ERROR: no $lmp: run gpu-check.sh build first" >&2; exit 1; }
+  run=$work/src/run
+  [ -d "$run" ] || { echo "ERROR: no run in the carry (gpu-check.sh pack with RUN=DIR)" >&2; exit 1; }
+  start=$SECONDS
+  # the first restart file after initial liquefaction (events.txt: step_IL)
+  il=$(awk '!/^#/ && $7 >= 0 {print $7; exit}' "$run/events.txt" 2> /dev/null || true)
+  files=(prep.restart)
+  if [ -n "$il" ]; then
+    k=$(ls "$run" | sed -n 's/^shear\.restart\.\([0-9]*\)$/\1/p' | sort -n | awk -v il="$il" '$1 > il {print; exit}')
+    [ -n "$k" ] && files+=("shear.restart.$k")
+  fi
+  for f in "${files[@]}"; do
+    RS=${RS:-1 2 4 8} VARS=${VARS:-} \
+      KK=${KK_DECK:-"-k on g 1 -sf kk -pk kokkos newton off neigh half -var newton_pair off"} \
+      bash "$top/bench/kokkos_campaign.sh" "$lmp" "$run" "$f" "${CAMPAIGN_NSTEPS:-20000}" \
+        "$work/campaign/$f"
+    cp "$work/campaign/$f/results.txt" "$work/campaign/results.$f.txt"
+    keep "$work/campaign/results.$f.txt"
+  done
+  echo "gpu-check campaign: $(( SECONDS - start )) s"
+  ;;
+
 all)
   "$0" build "$@"
   "$0" test
   "$0" bench
+  "$0" deck
+  "$0" campaign
   ;;
 
 *)
-  echo "ERROR: unknown phase $phase: pack, build, test, bench or all" >&2
+  echo "ERROR: unknown phase $phase: pack, build, test, bench, deck, campaign or all" >&2
   exit 1
   ;;
 esac
