@@ -35,7 +35,8 @@ reason:
   stage from one prepared sample, every column of the series, on 1 and 2
   ranks and with threads; a KOKKOS shear stage killed and resumed; the
   whole protocol in one process (preparation, then shear from its restart
-  file) into liquefaction;
+  file) into liquefaction; a tiny resistance-curve campaign with the
+  workflows' GPU option (gpus=1 jobs_per_gpu=2, on CPU threads);
 - fix grflow/wall/kk (whose contacts call the same functions of
   grflow_wall_pass.h) on the packing of tests/decks/wall_packing.lmp:
   forces, torques, the per-atom array, the walls' per-atom virial, the
