@@ -2,9 +2,11 @@
 # Campaigns that share one GPU: R copies of the shear stage of the deck
 # (inputs/cyclic_shear.lmp) from the same restart file, started together
 # on one device, for R in RS; prints per R the wall time of the batch, the
-# total steps per second (R NSTEPS / wall time) and the mean of the runs'
-# own steps per second (their loop times).  What pays is the R beyond which
-# the total stops growing.
+# total steps per second (the steps the R runs made over the wall time,
+# start-up included) and the mean of the runs' own steps per second (steps
+# over loop times).  A run ends before NSTEPS if its stage does (n_post
+# cycles after liquefaction, max_cycles); the steps are those of its loop
+# lines.  What pays is the R beyond which the total stops growing.
 #
 #   bash bench/kokkos_campaign.sh LMP RUNDIR FILE NSTEPS OUTDIR
 #
@@ -66,15 +68,16 @@ for r in $rs; do
   for p in "${pids[@]}"; do wait "$p" || failed=1; done
   end=$(date +%s.%N)
   [ "$failed" = 0 ] || { echo "kokkos_campaign.sh: a run of R = $r failed (logs in $out/R$r)" >&2; exit 1; }
-  # each run's own rate: its steps over the sum of its loop times (the
-  # stage is split into runs at every event)
-  rates=()
+  # each run's steps and loop time ("Loop time of T on P procs for S
+  # steps"; the stage is split into runs at every event)
+  made=()
   for ((j = 1; j <= r; j++)); do
-    rates+=("$(awk -v n="$nsteps" '/^Loop time/ {t += $4} END {printf "%.1f", n / t}' \
+    made+=("$(awk '/^Loop time/ {t += $4; n += $9} END {printf "%d:%.6f", n, t}' \
       "$out/R$r/run$j/log.shear.lammps")")
   done
-  awk -v r="$r" -v n="$nsteps" -v s="$start" -v e="$end" -v rates="${rates[*]}" 'BEGIN {
-    k = split(rates, a, " "); m = 0; for (i = 1; i <= k; i++) m += a[i]
-    printf "%3d  %7.1f  %10.1f  %10.1f\n", r, e - s, r * n / (e - s), m / k }' \
+  awk -v r="$r" -v s="$start" -v e="$end" -v made="${made[*]}" 'BEGIN {
+    k = split(made, a, " "); steps = 0; m = 0
+    for (i = 1; i <= k; i++) { split(a[i], b, ":"); steps += b[1]; m += b[1] / b[2] }
+    printf "%3d  %7.1f  %10.1f  %10.1f\n", r, e - s, steps / (e - s), m / k }' \
     | tee -a "$out/results.txt"
 done

@@ -16,7 +16,8 @@
 # than the default); default "1 core|1|" "2 ranks|2|".  The KOKKOS styles
 # on a GPU against 2 ranks of the plain ones, e.g.:
 #   bash bench/sample_shear_speed.sh runs/case 20000 "2 ranks|2|" \
-#     "gpu|1||-k on g 1 -sf kk -pk kokkos newton off neigh half -var newton_pair off|build-kokkos-cuda/lmp"  The variants run alike from the same
+#     "gpu|1||-k on g 1 -sf kk -pk kokkos newton off neigh half -var newton_pair off|build-kokkos-cuda/lmp"
+# The variants run alike from the same
 # file (the transport does not change the arithmetic), so their sums
 # compare the whole stage, weighted by where its steps are.  Example, Open
 # MPI's single-copy transfers off against the default, 2 rounds:

@@ -35,8 +35,9 @@ while true; do
         else
           export CUDA_VISIBLE_DEVICES=$g
         fi
-        "$@"
-        exit $?
+        # the job keeps the lock (the open file) until it ends, and gets
+        # the workflow's signals itself
+        exec "$@"
       fi
       exec {fd}>&-
     done

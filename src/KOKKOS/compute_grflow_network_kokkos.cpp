@@ -102,10 +102,14 @@ template <class DeviceType> struct NetworkInside {
 /* ----------------------------------------------------------------------
    particle-particle contacts of owned atom ilist[ii] (the plain compute's
    sum_pair_contacts() with newton off): the ends inside, their arms and
-   n (x) f, n (x) n, and (NETWORK) the contact counts of owned atoms
+   n (x) f, n (x) n, and (network) the contact counts of owned atoms.
+   network is a run-time flag, not a template parameter: the stress path
+   and the whole vector run the same kernel, launched alike, so that their
+   stress sums are added in the same order (on a GPU too), as the plain
+   compute promises
 ------------------------------------------------------------------------- */
 
-template <class DeviceType, int NETWORK> struct NetworkPairSums : NetworkArrayReduction {
+template <class DeviceType> struct NetworkPairSums : NetworkArrayReduction {
   typedef DeviceType device_type;
   typedef ArrayTypes<DeviceType> AT;
 
@@ -121,7 +125,7 @@ template <class DeviceType, int NETWORK> struct NetworkPairSums : NetworkArrayRe
   typename PairGranularGRFLOWKernel<DeviceType>::tdual_coeff_2d::t_dev_const_randomread d_coeff;
   typename AT::t_float_1d inside;
   typename AT::t_float_1d ncontact;
-  int nlocal, full_arm;
+  int nlocal, full_arm, network;
   double dt;
   double weight_lj[4];
 
@@ -173,11 +177,11 @@ template <class DeviceType, int NETWORK> struct NetworkPairSums : NetworkArrayRe
         f[k] = fpair * del[k] + factor * out.ft[k];
       }
       const double delta = radi + radj - r;
-      if (NETWORK) {
+      if (network) {
         if (use_i) Kokkos::atomic_add(&ncontact(i), 1.0);
         if (use_j) Kokkos::atomic_add(&ncontact(j), 1.0);
       }
-      NS::add_pair_contact(sums, n, f, delta, radi, radj, use_i, use_j, NETWORK != 0);
+      NS::add_pair_contact(sums, n, f, delta, radi, radj, use_i, use_j, network != 0);
     }
   }
 };
@@ -187,7 +191,7 @@ template <class DeviceType, int NETWORK> struct NetworkPairSums : NetworkArrayRe
    compute's add_wall_contacts()): records of nwall walls per atom
 ------------------------------------------------------------------------- */
 
-template <class DeviceType, int NETWORK> struct NetworkWallSums : NetworkArrayReduction {
+template <class DeviceType> struct NetworkWallSums : NetworkArrayReduction {
   typedef DeviceType device_type;
   typedef ArrayTypes<DeviceType> AT;
   typedef GRFLOW::WallContacts C;
@@ -195,7 +199,7 @@ template <class DeviceType, int NETWORK> struct NetworkWallSums : NetworkArrayRe
   typename AT::t_float_1d inside;
   typename AT::t_float_1d ncontact;
   typename AT::t_float_2d records;
-  int nwall;
+  int nwall, network;
   double normal[2];
 
   KOKKOS_INLINE_FUNCTION void operator()(const int i, value_type sums) const
@@ -206,7 +210,7 @@ template <class DeviceType, int NETWORK> struct NetworkWallSums : NetworkArrayRe
       if (arm <= 0.0) continue;
       double force[3];
       for (int k = 0; k < 3; k++) force[k] = records(i, C::REC_SIZE * w + C::REC_FORCE + k);
-      if (NETWORK) {
+      if (network) {
         ncontact(i) += 1.0;
         NS::add_wall_contact(sums, normal[w], force, arm);
       } else {
@@ -361,8 +365,8 @@ double ComputeGRFLOWNetworkKokkos<DeviceType>::local_sums(double *sums, bool net
   // particle-particle contacts
   auto *pairKK = static_cast<PairGranularGRFLOWKokkos<DeviceType> *>(force->pair);
   const PairGranularGRFLOWKernel<DeviceType> &pk = *pairKK->contact_data();
-  const int inum = force->pair->list->inum;
-  auto pair_sums = [&](auto &s) {
+  {
+    NetworkPairSums<DeviceType> s;
     s.value_count = nsums;
     s.x = x;
     s.v = atomKK->k_v.template view<DeviceType>();
@@ -378,18 +382,12 @@ double ComputeGRFLOWNetworkKokkos<DeviceType>::local_sums(double *sums, bool net
     s.ncontact = d_ncontact;
     s.nlocal = nlocal;
     s.full_arm = pk.full_arm;
+    s.network = network ? 1 : 0;
     s.dt = pk.dt;
     for (int m = 0; m < 4; m++) s.weight_lj[m] = force->special_lj[m];
-    if (inum > 0)
-      Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, inum), s,
+    if (pk.inum > 0)
+      Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, pk.inum), s,
                               Kokkos::subview(d_sums, 0, Kokkos::ALL()));
-  };
-  if (network) {
-    NetworkPairSums<DeviceType, 1> s;
-    pair_sums(s);
-  } else {
-    NetworkPairSums<DeviceType, 0> s;
-    pair_sums(s);
   }
 
   // contacts with the walls of each fix, in the order of the fixes
@@ -398,24 +396,17 @@ double ComputeGRFLOWNetworkKokkos<DeviceType>::local_sums(double *sums, bool net
     auto *offered = static_cast<FixGRFLOWWallContactsKokkos *>(
         wall_fix(k)->extract("grflow/wall_contacts/kk", dim));
     offered->records->template sync<DeviceType>();
-    auto wall_sums = [&](auto &s) {
-      s.value_count = nsums;
-      s.inside = d_inside;
-      s.ncontact = d_ncontact;
-      s.records = offered->records->template view<DeviceType>();
-      s.nwall = offered->contacts->nwall;
-      for (int w = 0; w < 2; w++) s.normal[w] = offered->contacts->normal[w];
-      if (nlocal > 0)
-        Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, nlocal), s,
-                                Kokkos::subview(d_sums, 1 + k, Kokkos::ALL()));
-    };
-    if (network) {
-      NetworkWallSums<DeviceType, 1> s;
-      wall_sums(s);
-    } else {
-      NetworkWallSums<DeviceType, 0> s;
-      wall_sums(s);
-    }
+    NetworkWallSums<DeviceType> s;
+    s.value_count = nsums;
+    s.inside = d_inside;
+    s.ncontact = d_ncontact;
+    s.records = offered->records->template view<DeviceType>();
+    s.nwall = offered->contacts->nwall;
+    s.network = network ? 1 : 0;
+    for (int w = 0; w < 2; w++) s.normal[w] = offered->contacts->normal[w];
+    if (nlocal > 0)
+      Kokkos::parallel_reduce(Kokkos::RangePolicy<DeviceType>(0, nlocal), s,
+                              Kokkos::subview(d_sums, 1 + k, Kokkos::ALL()));
   }
 
   // particles inside with their contact numbers

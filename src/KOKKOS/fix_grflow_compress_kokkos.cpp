@@ -28,6 +28,7 @@
 
 #include "atom_kokkos.h"
 #include "atom_masks.h"
+#include "comm.h"
 #include "domain.h"
 
 #include "grflow_servo.h"
@@ -98,9 +99,27 @@ FixGRFLOWCompressKokkos<DeviceType>::FixGRFLOWCompressKokkos(LAMMPS *lmp, int na
   kokkosable = 1;
   atomKK = (AtomKokkos *) atom;
   execution_space = ExecutionSpaceFromDevice<DeviceType>::space;
-  // the fix's own atom data (the compute and the wall fix sync theirs)
+  // the fix's own atom data (the compute and the wall fix sync theirs);
+  // remap_group() marks what it changes itself
   datamask_read = X_MASK | V_MASK | OMEGA_MASK | RMASS_MASK | RADIUS_MASK | MASK_MASK;
-  datamask_modify = X_MASK;
+  datamask_modify = EMPTY_MASK;
+}
+
+/* ----------------------------------------------------------------------
+   the style name of fix grflow/compress (after the suffix was added to it),
+   for restart files: LAMMPS matches a fix's restart data by ID and by the
+   style without the suffix only when -sf kk added it
+------------------------------------------------------------------------- */
+
+template <class DeviceType> void FixGRFLOWCompressKokkos<DeviceType>::post_constructor()
+{
+  if (comm->me == 0)
+    utils::logmesg(
+        lmp,
+        "Fix {} {}: the box remap and kinetic energy on the Kokkos {}, as style grflow/compress\n",
+        style, id, (execution_space == Device) ? "device" : "host");
+  delete[] style;
+  style = utils::strdup("grflow/compress");
 }
 
 /* ----------------------------------------------------------------------

@@ -40,6 +40,7 @@ template <class DeviceType> class FixGRFLOWCompressKokkos : public FixGRFLOWComp
   typedef ArrayTypes<DeviceType> AT;
 
   FixGRFLOWCompressKokkos(class LAMMPS *, int, char **);
+  void post_constructor() override;
   void init() override;
 
  protected:

@@ -26,6 +26,7 @@
 
 #include "atom_kokkos.h"
 #include "atom_masks.h"
+#include "comm.h"
 
 #include "grflow_shear_rule.h"
 
@@ -70,9 +71,25 @@ FixGRFLOWShearKokkos<DeviceType>::FixGRFLOWShearKokkos(LAMMPS *lmp, int narg, ch
   kokkosable = 1;
   atomKK = (AtomKokkos *) atom;
   execution_space = ExecutionSpaceFromDevice<DeviceType>::space;
-  // the fix's own atom data (the compute and the wall fix sync theirs)
+  // the fix's own atom data (the compute and the wall fix sync theirs);
+  // glue() marks what it changes itself, as it changes it
   datamask_read = X_MASK | V_MASK | OMEGA_MASK | MASK_MASK;
-  datamask_modify = X_MASK | V_MASK | OMEGA_MASK;
+  datamask_modify = EMPTY_MASK;
+}
+
+/* ----------------------------------------------------------------------
+   the style name of fix grflow/shear (after the suffix was added to it),
+   for restart files: LAMMPS matches a fix's restart data by ID and by the
+   style without the suffix only when -sf kk added it
+------------------------------------------------------------------------- */
+
+template <class DeviceType> void FixGRFLOWShearKokkos<DeviceType>::post_constructor()
+{
+  if (comm->me == 0)
+    utils::logmesg(lmp, "Fix {} {}: the glued layer on the Kokkos {}, as style grflow/shear\n",
+                   style, id, (execution_space == Device) ? "device" : "host");
+  delete[] style;
+  style = utils::strdup("grflow/shear");
 }
 
 /* ---------------------------------------------------------------------- */

@@ -40,6 +40,7 @@ template <class DeviceType> class FixGRFLOWShearKokkos : public FixGRFLOWShear {
   typedef ArrayTypes<DeviceType> AT;
 
   FixGRFLOWShearKokkos(class LAMMPS *, int, char **);
+  void post_constructor() override;
 
  protected:
   void glue(double vw, bool step) override;

@@ -233,6 +233,7 @@ template <class DeviceType> void PairGranularGRFLOWKokkos<DeviceType>::compute(i
 
   auto k_list = static_cast<NeighListKokkos<DeviceType> *>(list);
   const int inum = list->inum;
+  k.inum = inum;
   k.d_ilist = k_list->d_ilist;
   k.d_numneigh = k_list->d_numneigh;
   k.d_neighbors = k_list->d_neighbors;

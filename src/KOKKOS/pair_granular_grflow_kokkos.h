@@ -73,7 +73,8 @@ template <class DeviceType> struct PairGranularGRFLOWKernel {
   // one pair of atoms at the same position (no contact normal): flag, i, j
   typename AT::t_int_1d d_same;
 
-  int nlocal, full_arm, eflag, eflag_global, eflag_atom, vflag_either, vflag_global, vflag_atom;
+  int inum, nlocal, full_arm, eflag, eflag_global, eflag_atom, vflag_either, vflag_global,
+      vflag_atom;
   double dt;
   double weight_lj[4];    // force->special_lj (Pair::special_lj holds ints)
 

@@ -316,8 +316,8 @@ namespace GRFLOW {
   ------------------------------------------------------------------------- */
 
   // twice the kinetic energy of one sphere, translation and rotation
-  static GRFLOW_FUNCTION double kinetic_term(const double *v, const double *omega, double rmass,
-                                             double radius)
+  static inline GRFLOW_FUNCTION double kinetic_term(const double *v, const double *omega,
+                                                    double rmass, double radius)
   {
     const double vv = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
     const double ww = omega[0] * omega[0] + omega[1] * omega[1] + omega[2] * omega[2];

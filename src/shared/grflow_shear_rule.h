@@ -324,7 +324,7 @@ namespace GRFLOW {
      x += dt vw
   ------------------------------------------------------------------------- */
 
-  static GRFLOW_FUNCTION void glue_atom(double vw, double *v, double *omega)
+  static inline GRFLOW_FUNCTION void glue_atom(double vw, double *v, double *omega)
   {
     v[0] = vw;
     v[1] = v[2] = 0.0;

@@ -1316,10 +1316,24 @@ def deck_args(outdir, **var):
     return args
 
 
+# the KOKKOS fixes say so when they are made (they take the plain styles'
+# names, for restart files): -sf kk chose them, not the plain fixes
+SHEAR_KK_LINE = "the glued layer on the Kokkos"
+COMPRESS_KK_LINE = "the box remap and kinetic energy on the Kokkos"
+
+
 def run_deck(outdir, kokkos, nprocs=1, threads=None, **var):
     outdir.mkdir(parents=True, exist_ok=True)
-    return run(deck_args(outdir, **var), outdir, kokkos=kokkos, nprocs=nprocs, threads=threads,
+    proc = run(deck_args(outdir, **var), outdir, kokkos=kokkos, nprocs=nprocs, threads=threads,
                wall_kk=kokkos)
+    if kokkos:
+        stage = var.get("stage", "all")
+        logs = "".join(p.read_text() for p in outdir.glob("log.*.lammps"))
+        if stage in ("prep", "all"):
+            assert COMPRESS_KK_LINE in logs, logs[-2000:]
+        if stage in ("shear", "all"):
+            assert SHEAR_KK_LINE in logs, logs[-2000:]
+    return proc
 
 
 def prep_rows(log):
