@@ -447,6 +447,44 @@ TEST_F(Shear, StopCyclesAndHalt)
   EXPECT_EQ(shear(lmp)[ShearVector::DONE], 1.0);
 }
 
+// halt yes ends the runs where fix halt on the event and done flags (error
+// continue) ends them: at each event, and once done at every check
+TEST_F(Shear, HaltYesEndsRunsAsFixHalt)
+{
+  const std::string every = std::to_string(EVERY);
+  auto ends = [](Lammps &lmp) {
+    std::vector<long> out;
+    for (int k = 0; k < 6; k++) {
+      lmp.cmd("run 20000 post no");
+      out.push_back(step(lmp));
+    }
+    return out;
+  };
+  std::vector<long> ref, got;
+  {
+    Lammps lmp;
+    const double p = read(lmp);
+    lmp.cmds({shear_cmd(p, "stop_cycles 1"), "variable ev equal f_sh[14]",
+              "variable done equal f_sh[13]",
+              "fix ev all halt " + every + " v_ev != 0 error continue message no",
+              "fix stop all halt " + every + " v_done > 0.5 error continue message no"});
+    ref = ends(lmp);
+  }
+  {
+    Lammps lmp;
+    const double p = read(lmp);
+    lmp.cmd(shear_cmd(p, "stop_cycles 1 halt yes"));
+    got = ends(lmp);
+  }
+  printf("[ measured ] runs ended at steps %ld %ld %ld %ld %ld %ld\n", got[0], got[1], got[2], got[3],
+         got[4], got[5]);
+  EXPECT_EQ(got, ref);
+  // four events (two reversals, two zero-crossings: N = 1, done), then one
+  // check each, and none reaches the end of its 20000 steps
+  EXPECT_EQ(got[5] - got[4], EVERY);
+  EXPECT_LT(got[3] - got[0], 20000);
+}
+
 // reversal steps from a fix print file (lines "step reversals"): the steps
 // where the count differs from the line before, the first line compared
 // with `last`
@@ -668,6 +706,8 @@ TEST_F(Shear, BadArguments)
        "Fix grflow/shear glue group nogroup does not exist"},
       {"fix sh all grflow/shear w net 0.02 1000 progress maybe",
        "Expected boolean parameter instead of 'maybe'"},
+      {"fix sh all grflow/shear w net 0.02 1000 halt 1.5",
+       "Expected boolean parameter instead of '1.5'"},
   };
   for (const auto &c : cases) {
     const std::string msg = error_after(setup, c.line);

@@ -58,6 +58,7 @@ FixGRFLOWShear::FixGRFLOWShear(LAMMPS *lmp, int narg, char **arg) :
   progress = new GRFLOW::ShearProgress;
   GRFLOW::FixHost host{lmp};
   settings->parse(narg, arg, host);
+  if (settings->halt && !GRFLOW::can_end_run()) error->all(FLERR, settings->halt_unsupported());
   if (!settings->glue.empty()) {
     iglue = group->find(settings->glue.c_str());
     if (iglue < 0) error->all(FLERR, settings->glue_missing());
@@ -94,6 +95,7 @@ int FixGRFLOWShear::setmask()
 {
   int mask = END_OF_STEP;
   if (iglue >= 0) mask |= INITIAL_INTEGRATE;
+  if (settings->halt) mask |= POST_RUN;
   return mask;
 }
 
@@ -169,7 +171,24 @@ void FixGRFLOWShear::glue(double vw, bool step)
 
 void FixGRFLOWShear::end_of_step()
 {
-  if (settings->decides(false, update->ntimestep)) check();
+  if (!settings->decides(false, update->ntimestep)) return;
+  check();
+  // halt yes: the run ends after the step of an event, and after a check
+  // once done (as fix halt every N with v_event != 0 or v_done > 0.5,
+  // error continue); it reads no atom data
+  if (settings->halt &&
+      (compute_vector(GRFLOW::ShearLayout::EVENT) != 0.0 ||
+       compute_vector(GRFLOW::ShearLayout::DONE) > 0.5))
+    GRFLOW::end_run(lmp);
+}
+
+/* ----------------------------------------------------------------------
+   halt yes: a later run goes on (the run ended early by end_run())
+------------------------------------------------------------------------- */
+
+void FixGRFLOWShear::post_run()
+{
+  GRFLOW::run_may_continue(lmp);
 }
 
 /* ----------------------------------------------------------------------

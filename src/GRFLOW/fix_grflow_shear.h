@@ -40,6 +40,7 @@ class FixGRFLOWShear : public Fix {
   void setup(int) override;
   void initial_integrate(int) override;
   void end_of_step() override;
+  void post_run() override;
   void reset_dt() override;
   double compute_vector(int) override;
   void write_restart(FILE *) override;

@@ -74,6 +74,17 @@ namespace GRFLOW {
   bool restart_keeps_time();
 
   /* ----------------------------------------------------------------------
+     ending a run early, as LAMMPS's fix halt ... error continue does: the
+     run ends after the current step, and later runs go on (end_run() in
+     end_of_step, run_may_continue() in post_run).  LIGGGHTS 3.8 has no
+     such means (can_end_run() false).
+  ------------------------------------------------------------------------- */
+
+  bool can_end_run();
+  void end_run(LAMMPS *lmp);
+  void run_may_continue(LAMMPS *lmp);
+
+  /* ----------------------------------------------------------------------
      commands and settings by name
   ------------------------------------------------------------------------- */
 

@@ -36,6 +36,7 @@
 #include "modify.h"
 #include "neigh_list.h"
 #include "pair.h"
+#include "timer.h"
 #include "variable.h"
 
 #include <cmath>
@@ -105,6 +106,23 @@ const double *GRFLOW::read_restart_values(LAMMPS *lmp, const std::string &who, c
 bool GRFLOW::restart_keeps_time()
 {
   return true;
+}
+
+/* ---------------------------------------------------------------------- */
+
+bool GRFLOW::can_end_run()
+{
+  return true;
+}
+
+void GRFLOW::end_run(LAMMPS *lmp)
+{
+  lmp->timer->force_timeout();
+}
+
+void GRFLOW::run_may_continue(LAMMPS *lmp)
+{
+  lmp->timer->reset_timeout();
 }
 
 /* ---------------------------------------------------------------------- */

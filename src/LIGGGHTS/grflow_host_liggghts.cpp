@@ -135,6 +135,20 @@ bool GRFLOW::restart_keeps_time()
   return false;
 }
 
+/* ----------------------------------------------------------------------
+   LIGGGHTS 3.8's run loop has no early end (its timer has no timeout):
+   the LIGGGHTS decks run fixed segments instead
+------------------------------------------------------------------------- */
+
+bool GRFLOW::can_end_run()
+{
+  return false;
+}
+
+void GRFLOW::end_run(LAMMPS *) {}
+
+void GRFLOW::run_may_continue(LAMMPS *) {}
+
 /* ---------------------------------------------------------------------- */
 
 Fix *GRFLOW::fix_by_id(LAMMPS *lmp, const std::string &id)

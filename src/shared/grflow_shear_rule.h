@@ -70,7 +70,8 @@ namespace GRFLOW {
     int check_every = 1;
     double stop_cycles = 0.0, stop_cycles_after_il = 0.0, stop_gamma = 0.0;    // 0: none
     bool progress = true;
-    std::string glue;    // group glued to the top wall, "" if none
+    bool halt = false;    // end the run at every event and when done (halt yes)
+    std::string glue;     // group glued to the top wall, "" if none
 
     // read the arguments of the fix command
     template <class Host> void parse(int narg, char **arg, Host &host)
@@ -92,7 +93,7 @@ namespace GRFLOW {
       static const Keyword known[] = {{"every", 1},       {"liquefaction", 1},
                                       {"stop_cycles", 1}, {"stop_after_liquefaction", 1},
                                       {"stop_gamma", 1},  {"progress", 1},
-                                      {"glue", 1}};
+                                      {"glue", 1},        {"halt", 1}};
       parse_keywords(narg, arg, 7, "fix grflow/shear", known, host,
                      [&](const std::string &kw, char **values, const std::string &what) {
                        keyword(kw, values[0], what, host);
@@ -114,6 +115,8 @@ namespace GRFLOW {
                         host.text(ru_liq));
       } else if (kw == "progress") {
         progress = host.logical(FLERR, value, what);
+      } else if (kw == "halt") {
+        halt = host.logical(FLERR, value, what);
       } else if (kw == "glue") {
         glue = value;
       } else if (kw == "stop_cycles" || kw == "stop_gamma" || kw == "stop_after_liquefaction") {
@@ -137,6 +140,11 @@ namespace GRFLOW {
     std::string glue_deleted() const
     {
       return "Fix grflow/shear glue group " + glue + " was deleted";
+    }
+    std::string halt_unsupported() const
+    {
+      return "Fix grflow/shear halt yes: this program cannot end a run early (LIGGGHTS 3.8: run "
+             "fixed segments instead)";
     }
   };
 
