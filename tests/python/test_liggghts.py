@@ -345,6 +345,18 @@ def test_compute_bad_input(tmp_path, compute, message):
     assert message in proc.stdout + proc.stderr
 
 
+def test_shear_halt_is_refused(tmp_path):
+    """fix grflow/shear halt yes ends runs early, which LIGGGHTS 3.8 cannot:
+    an error that says so, not a run that ignores the keyword"""
+    deck = tmp_path / "in.halt"
+    deck.write_text(COMPUTE_DECK.format(
+        pair="pair_style gran model grflow\npair_coeff * *",
+        compute="compute n all grflow/network\nfix sh all grflow/shear w n 0.02 1000 halt yes"))
+    proc = run_liggghts(["-in", str(deck)], tmp_path, check=False)
+    assert proc.returncode != 0
+    assert "halt yes: this program cannot end a run early" in proc.stdout + proc.stderr
+
+
 def test_compute_needs_model_grflow(tmp_path):
     """the compute's forces come from GRFLOW's law: another model is refused"""
     deck = tmp_path / "in.compute"
