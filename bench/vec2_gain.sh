@@ -83,15 +83,28 @@ for state in dict.fromkeys(r[1] for r in rows):
     print(f"\n{state}: per round, steps/s vec2 | scalar (loop time), "
           "ratios scalar/vec2 of loop time | loop CPU time | process CPU time")
     ratios = {m: [] for m, _ in measures}
+    # a time of 0 (a run too short for the clock: LAMMPS's "% CPU use" of
+    # a millisecond loop can read 0.0%) gives no ratio; it is said, not
+    # divided by
+    def ratio(b, a):
+        return b / a if a > 0.0 and b > 0.0 else None
+    def rate(r):
+        return f"{int(r[3]) / float(r[4]):7.1f}" if float(r[4]) > 0.0 else "    n/a"
     for r in rounds:
         a, b = runs[(r, state, "vec2")], runs[(r, state, "scalar")]
+        line = []
         for m, col in measures:
-            ratios[m].append(float(b[col]) / float(a[col]))
-        print(f"  round {r}: {int(a[3]) / float(a[4]):7.1f} | {int(b[3]) / float(b[4]):7.1f} steps/s, "
-              + " | ".join(f"{ratios[m][-1]:.4f}" for m, _ in measures)
+            q = ratio(float(b[col]), float(a[col]))
+            if q is not None:
+                ratios[m].append(q)
+            line.append(f"{q:.4f}" if q is not None else "n/a (a time of 0)")
+        print(f"  round {r}: {rate(a)} | {rate(b)} steps/s, " + " | ".join(line)
               + f" (load {a[8]}, {b[8]})")
     for m, _ in measures:
         x = ratios[m]
+        if not x:
+            print(f"  {m} ratio scalar/vec2: no round with both times > 0")
+            continue
         med = statistics.median(x)
         print(f"  {m} ratio scalar/vec2: median {med:.4f}, min {min(x):.4f}, max {max(x):.4f}"
               f" over {len(x)} rounds; the lanes save {100 * (1 - 1 / med):.1f}% of a step (median)")
