@@ -28,9 +28,9 @@
 
 #include "atom_kokkos.h"
 #include "atom_masks.h"
-#include "comm.h"
 #include "domain.h"
 
+#include "grflow_kokkos_style.h"
 #include "grflow_servo.h"
 
 using namespace LAMMPS_NS;
@@ -113,13 +113,7 @@ FixGRFLOWCompressKokkos<DeviceType>::FixGRFLOWCompressKokkos(LAMMPS *lmp, int na
 
 template <class DeviceType> void FixGRFLOWCompressKokkos<DeviceType>::post_constructor()
 {
-  if (comm->me == 0)
-    utils::logmesg(
-        lmp,
-        "Fix {} {}: the box remap and kinetic energy on the Kokkos {}, as style grflow/compress\n",
-        style, id, (execution_space == Device) ? "device" : "host");
-  delete[] style;
-  style = utils::strdup("grflow/compress");
+  GRFLOW::take_plain_style(lmp, this, "grflow/compress", "the box remap and kinetic energy");
 }
 
 /* ----------------------------------------------------------------------

@@ -26,8 +26,8 @@
 
 #include "atom_kokkos.h"
 #include "atom_masks.h"
-#include "comm.h"
 
+#include "grflow_kokkos_style.h"
 #include "grflow_shear_rule.h"
 
 using namespace LAMMPS_NS;
@@ -85,11 +85,7 @@ FixGRFLOWShearKokkos<DeviceType>::FixGRFLOWShearKokkos(LAMMPS *lmp, int narg, ch
 
 template <class DeviceType> void FixGRFLOWShearKokkos<DeviceType>::post_constructor()
 {
-  if (comm->me == 0)
-    utils::logmesg(lmp, "Fix {} {}: the glued layer on the Kokkos {}, as style grflow/shear\n",
-                   style, id, (execution_space == Device) ? "device" : "host");
-  delete[] style;
-  style = utils::strdup("grflow/shear");
+  GRFLOW::take_plain_style(lmp, this, "grflow/shear", "the glued layer");
 }
 
 /* ---------------------------------------------------------------------- */

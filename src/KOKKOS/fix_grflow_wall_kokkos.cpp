@@ -45,12 +45,12 @@
 
 #include "atom_kokkos.h"
 #include "atom_masks.h"
-#include "comm.h"
 #include "error.h"
 #include "memory_kokkos.h"
 #include "output.h"
 #include "update.h"
 
+#include "grflow_kokkos_style.h"
 #include "grflow_wall.h"
 #include "grflow_wall_pass.h"
 #include "grflow_wall_state.h"
@@ -262,11 +262,7 @@ template <class DeviceType> FixGRFLOWWallKokkos<DeviceType>::~FixGRFLOWWallKokko
 
 template <class DeviceType> void FixGRFLOWWallKokkos<DeviceType>::post_constructor()
 {
-  if (comm->me == 0)
-    utils::logmesg(lmp, "Fix {} {}: the walls' contacts on the Kokkos {}, as style grflow/wall\n",
-                   style, id, (execution_space == Device) ? "device" : "host");
-  delete[] style;
-  style = utils::strdup("grflow/wall");
+  GRFLOW::take_plain_style(lmp, this, "grflow/wall", "the walls' contacts");
 }
 
 /* ----------------------------------------------------------------------
