@@ -3,7 +3,7 @@
 # ways (the quick preset; mu_prep 0.0407 without and with the agitation
 # stage): the scatter behind the thresholds of tests/python/test_protocol.py
 # (doc/studies/prep-scatter.md).  Lines "name seed e z_g p" on stdout;
-# 2 runs at a time.
+# 2 runs at a time; the lines come in seed order once all have run.
 #   bash bench/prep_scatter.sh [OUT_DIR]     (default runs/escatter)
 # Environment: LMP (default build/lmp), SEEDS (default "1 2 3 4 5 6"),
 # N (default 500).  prep.json is read by grflow-python: on PATH, else in
@@ -22,7 +22,7 @@ job() { # name seed [lmp args]
   "$LMP" -nocite -echo none -log none -screen none -in "$TOP/inputs/cyclic_shear.lmp" \
     -var inputs "$TOP/inputs" -var outdir "$out" -var preset quick -var N "$SIZE" -var stage prep \
     -var seed "$seed" "$@"
-  "$PYTHON" -c "import json; d = json.load(open('$out/prep.json')); print('$name', $seed, d['e'], d['z_g'], d['p'])"
+  "$PYTHON" -c "import json; d = json.load(open('$out/prep.json')); open('$out/line', 'w').write(f\"$name $seed {d['e']} {d['z_g']} {d['p']}\\n\")"
 }
 export -f job
 for s in ${SEEDS:-1 2 3 4 5 6}; do
@@ -30,3 +30,8 @@ for s in ${SEEDS:-1 2 3 4 5 6}; do
   echo "plain $s -var mu_prep 0.0407 -var agitate_dilation 1.0 -var mu_rec 0.25"
   echo "agitated $s -var mu_prep 0.0407 -var agitate_dilation 1.003 -var mu_rec 0.25"
 done | xargs -P 2 -L 1 bash -c 'job "$@"' _
+# One line per job, printed here in order: two jobs writing to one pipe
+# could interleave their pieces.
+for s in ${SEEDS:-1 2 3 4 5 6}; do
+  for name in small plain agitated; do cat "$OUT/$name-s$s/line"; done
+done
