@@ -14,7 +14,7 @@
 /* ----------------------------------------------------------------------
    Plugin entry point: registers the GRFLOW styles (pair granular/grflow,
    compute grflow/network, fix grflow/wall, fix grflow/shear,
-   fix grflow/compress, fix grflow/checksum) with a PLUGIN-enabled
+   fix grflow/compress, fix grflow/drag, fix grflow/checksum) with a PLUGIN-enabled
    LAMMPS 4Feb2025 built with the same MPI, LAMMPS_SIZES and compiler.
      plugin load grflowplugin.so
 ------------------------------------------------------------------------- */
@@ -25,6 +25,7 @@
 #include "compute_grflow_network.h"
 #include "fix_grflow_checksum.h"
 #include "fix_grflow_compress.h"
+#include "fix_grflow_drag.h"
 #include "fix_grflow_shear.h"
 #include "fix_grflow_wall.h"
 #include "pair_granular_grflow.h"
@@ -59,6 +60,11 @@ static Fix *fix_grflow_checksum_creator(LAMMPS *lmp, int argc, char **argv)
 static Fix *fix_grflow_compress_creator(LAMMPS *lmp, int argc, char **argv)
 {
   return new FixGRFLOWCompress(lmp, argc, argv);
+}
+
+static Fix *fix_grflow_drag_creator(LAMMPS *lmp, int argc, char **argv)
+{
+  return new FixGRFLOWDrag(lmp, argc, argv);
 }
 
 extern "C" __attribute__((visibility("default"))) void lammpsplugin_init(void *lmp, void *handle,
@@ -96,6 +102,11 @@ extern "C" __attribute__((visibility("default"))) void lammpsplugin_init(void *l
   plugin.name = "grflow/compress";
   plugin.info = "GRFLOW isotropic compression of the cell by all six sides, stress servo";
   plugin.creator.v2 = (lammpsplugin_factory2 *) &fix_grflow_compress_creator;
+  (*register_plugin)(&plugin, lmp);
+
+  plugin.name = "grflow/drag";
+  plugin.info = "GRFLOW drag on velocities and spins (fix langevin at zero temperature)";
+  plugin.creator.v2 = (lammpsplugin_factory2 *) &fix_grflow_drag_creator;
   (*register_plugin)(&plugin, lmp);
 
   plugin.name = "grflow/checksum";
