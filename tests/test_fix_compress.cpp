@@ -580,6 +580,81 @@ TEST(Compress, WallCoefficientByFixModify)
             std::string::npos);
 }
 
+// halt stress / halt ready end the runs where fix halt every N on the
+// fix's error and convergence flag (error continue) ends them, fix_modify
+// switches it, and a compute used after a halted run is evaluated on its
+// last step (as after fix halt, which clears the computes' flags), not
+// taken from the run's first step (its last thermo output, which has the
+// z_g of a compute the servo does not use)
+TEST(Compress, HaltEndsRunsAsFixHalt)
+{
+  const std::string every = std::to_string(EVERY);
+  auto after_run = [](Lammps &lmp, const std::string &run, std::vector<long> &ends,
+                      std::vector<double> &zg) {
+    lmp.cmd(run);
+    ends.push_back((long) lmp.thermo("step"));
+    auto *z = (double *) lammps_extract_variable(lmp.handle, "zg", nullptr);
+    ASSERT_NE(z, nullptr);
+    zg.push_back(*z);
+    lammps_free(z);
+  };
+  const std::string run = "run 300000 post no";
+  std::vector<long> ref, got;
+  std::vector<double> zref, zgot;
+  {
+    Lammps lmp;
+    cell(lmp);
+    lmp.cmds({compress_cmd("tol 0.01 ke_ratio 1.0e-3"),
+              "compute slab all grflow/network zlimits v_zlo v_zhi slab 0.8",
+              "variable zg equal c_slab[15]", "thermo_style custom step v_zg",
+              "variable err equal f_cmp[5]", "variable ready equal f_cmp[1]",
+              "fix h all halt " + every + " v_err < 0.01 error continue message no"});
+    after_run(lmp, run, ref, zref);
+    lmp.cmds({"unfix h", "fix h all halt " + every + " v_ready > 0.5 error continue message no"});
+    after_run(lmp, run, ref, zref);
+    lmp.cmd("unfix h");
+    after_run(lmp, "run 1000 post no", ref, zref);
+    lmp.cmd("fix h all halt " + every + " v_ready > 0.5 error continue message no");
+    after_run(lmp, run, ref, zref);
+  }
+  {
+    Lammps lmp;
+    cell(lmp);
+    lmp.cmds({compress_cmd("tol 0.01 ke_ratio 1.0e-3 halt stress"),
+              "compute slab all grflow/network zlimits v_zlo v_zhi slab 0.8",
+              "variable zg equal c_slab[15]", "thermo_style custom step v_zg"});
+    after_run(lmp, run, got, zgot);
+    lmp.cmd("fix_modify cmp halt ready");
+    after_run(lmp, run, got, zgot);
+    lmp.cmd("fix_modify cmp halt no");
+    after_run(lmp, "run 1000 post no", got, zgot);
+    lmp.cmd("fix_modify cmp halt ready");
+    after_run(lmp, run, got, zgot);
+  }
+  ASSERT_EQ(got.size(), 4u);
+  printf("[ measured ] runs ended at steps %ld %ld %ld %ld, z_g %.6f %.6f %.6f %.6f\n", got[0],
+         got[1], got[2], got[3], zgot[0], zgot[1], zgot[2], zgot[3]);
+  EXPECT_EQ(got, ref);
+  EXPECT_EQ(zgot, zref);
+  // the halts did end the runs early, and a converged packing's next check
+  // ends the last run at once; halt no ran its 1000 steps
+  EXPECT_LT(got[0], 300000);
+  EXPECT_GT(got[1], got[0]);
+  EXPECT_LT(got[1] - got[0], 300000);
+  EXPECT_EQ(got[2] - got[1], 1000);
+  EXPECT_LE(got[3] - got[2], EVERY);
+
+  const std::vector<std::string> base = {"include " + deck("compress_cell.lmp"), compress_cmd()};
+  std::string msg = error_after(base, "fix_modify cmp halt");
+  EXPECT_NE(msg.find("Illegal fix_modify halt command: missing argument"), std::string::npos)
+      << msg;
+  msg = error_after(base, "fix_modify cmp halt sometimes");
+  EXPECT_NE(msg.find("halt must be no, stress or ready, got 'sometimes'"), std::string::npos)
+      << msg;
+  msg = error_after(base, "fix_modify cmp bogus 1");
+  EXPECT_NE(msg.find("does not support fix_modify bogus command"), std::string::npos) << msg;
+}
+
 TEST(Compress, BadInput)
 {
   const std::vector<std::string> base = {"include " + deck("compress_cell.lmp")};
@@ -602,6 +677,8 @@ TEST(Compress, BadInput)
       {"fix c all grflow/compress w net 1e5 ten",
        "fix grflow/compress rate_max expects a number, got 'ten'"},
       {"fix c all grflow/compress w net 1e5 10 elastic 3", "elastic takes an equal-style variable"},
+      {"fix c all grflow/compress w net 1e5 10 halt yes",
+       "Fix grflow/compress halt must be no, stress or ready, got 'yes'"},
   };
   for (const auto &c : cases) {
     const std::string msg = error_after(base, c.line);

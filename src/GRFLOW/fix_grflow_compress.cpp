@@ -47,6 +47,8 @@
 #include "update.h"
 #include "variable.h"
 
+#include <cstring>
+
 using namespace LAMMPS_NS;
 using namespace FixConst;
 using GRFLOW::FlatWalls;
@@ -62,6 +64,8 @@ FixGRFLOWCompress::FixGRFLOWCompress(LAMMPS *lmp, int narg, char **arg) :
   servo = new GRFLOW::StressServo;
   GRFLOW::FixHost host{lmp};
   settings->parse(narg, arg, host);
+  if (settings->halt != GRFLOW::CompressSettings::HALT_NO && !GRFLOW::can_end_run())
+    error->all(FLERR, GRFLOW::CompressSettings::halt_unsupported());
   GRFLOW::CompressSettings::check_cell(atom->radius_flag && atom->rmass_flag && atom->omega_flag,
                                        domain->triclinic, domain->xperiodic && domain->yperiodic,
                                        domain->dimension, host);
@@ -96,7 +100,26 @@ FixGRFLOWCompress::~FixGRFLOWCompress()
 
 int FixGRFLOWCompress::setmask()
 {
-  return END_OF_STEP;
+  // POST_RUN: halt, also when fix_modify sets it later
+  return END_OF_STEP | POST_RUN;
+}
+
+/* ----------------------------------------------------------------------
+   fix_modify halt no|stress|ready
+------------------------------------------------------------------------- */
+
+int FixGRFLOWCompress::modify_param(int narg, char **arg)
+{
+  if (strcmp(arg[0], "halt") != 0) return 0;
+  GRFLOW::FixHost host{lmp};
+  if (narg < 2) {
+    host.missing(FLERR, "fix_modify halt");
+    return 0;
+  }
+  settings->keyword("halt", arg[1], "fix_modify halt", host);
+  if (settings->halt != GRFLOW::CompressSettings::HALT_NO && !GRFLOW::can_end_run())
+    error->all(FLERR, GRFLOW::CompressSettings::halt_unsupported());
+  return 2;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -161,8 +184,30 @@ void FixGRFLOWCompress::end_of_step()
   if (settings->servo_step(update->ntimestep)) {
     update_servo();
     schedule_energy(update->ntimestep + settings->servo_every);
+    // halt: the run ends after this step (as fix halt ... error continue,
+    // on the outputs of this update); it reads no atom data
+    const double err = compute_vector(GRFLOW::CompressLayout::ERRMAX);
+    if (settings->halts(err, compute_vector(GRFLOW::CompressLayout::CONVERGED))) {
+      GRFLOW::FixHost host{lmp};
+      const bool ready = settings->halt == GRFLOW::CompressSettings::HALT_READY;
+      GRFLOW::log_text(lmp,
+                       std::string("Fix grflow/compress ") + id + ": halt " +
+                           (ready ? "ready" : "stress") + " met on step " +
+                           std::to_string(update->ntimestep) + " (largest stress error " +
+                           host.text(err) + "): the run ends\n");
+      GRFLOW::end_run(lmp);
+    }
   }
   deform_box();
+}
+
+/* ----------------------------------------------------------------------
+   halt: a later run goes on (a run ended early by end_run())
+------------------------------------------------------------------------- */
+
+void FixGRFLOWCompress::post_run()
+{
+  if (settings->halt != GRFLOW::CompressSettings::HALT_NO) GRFLOW::run_may_continue(lmp);
 }
 
 /* ----------------------------------------------------------------------

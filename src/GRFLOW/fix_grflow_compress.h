@@ -38,6 +38,8 @@ class FixGRFLOWCompress : public Fix {
   void init() override;
   void setup(int) override;
   void end_of_step() override;
+  void post_run() override;
+  int modify_param(int, char **) override;
   void reset_dt() override;
   double compute_vector(int) override;
   void write_restart(FILE *) override;

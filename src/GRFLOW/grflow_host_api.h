@@ -76,8 +76,9 @@ namespace GRFLOW {
   /* ----------------------------------------------------------------------
      ending a run early, as LAMMPS's fix halt ... error continue does: the
      run ends after the current step, and later runs go on (end_run() in
-     end_of_step, run_may_continue() in post_run).  LIGGGHTS 3.8 has no
-     such means (can_end_run() false).
+     end_of_step, run_may_continue() in post_run); computes used after the
+     run are evaluated afresh on its last step.  LIGGGHTS 3.8 has no such
+     means (can_end_run() false).
   ------------------------------------------------------------------------- */
 
   bool can_end_run();

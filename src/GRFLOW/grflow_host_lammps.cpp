@@ -118,6 +118,10 @@ bool GRFLOW::can_end_run()
 void GRFLOW::end_run(LAMMPS *lmp)
 {
   lmp->timer->force_timeout();
+  // as fix halt, whose check clears the computes' invoked flags: a
+  // variable evaluated after the run recomputes a compute on this last
+  // step instead of taking the value of its last thermo output
+  lmp->modify->clearstep_compute();
 }
 
 void GRFLOW::run_may_continue(LAMMPS *lmp)

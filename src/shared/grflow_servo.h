@@ -60,6 +60,10 @@ namespace GRFLOW {
     double gain = 10.0, tol = 0.01, ke_ratio_max = 1.0e-3;
     int servo_every = 1;
     std::string elastic_var;    // equal-style variable of the elastic energy, "" for the pair's
+    // halt: end the run after a servo update that meets the stress
+    // criterion (HALT_STRESS) or both criteria (HALT_READY)
+    enum { HALT_NO, HALT_STRESS, HALT_READY };
+    int halt = HALT_NO;
 
     // read the arguments of the fix command
     template <class Host> void parse(int narg, char **arg, Host &host)
@@ -79,8 +83,8 @@ namespace GRFLOW {
       if (rate_max <= 0.0)
         host.fail(FLERR, "Fix grflow/compress rate_max must be > 0, got " + host.text(rate_max));
 
-      static const Keyword known[] = {
-          {"elastic", 1}, {"gain", 1}, {"tol", 1}, {"ke_ratio", 1}, {"every", 1}};
+      static const Keyword known[] = {{"elastic", 1},  {"gain", 1},  {"tol", 1},
+                                      {"ke_ratio", 1}, {"every", 1}, {"halt", 1}};
       parse_keywords(narg, arg, 7, "fix grflow/compress", known, host,
                      [&](const std::string &kw, char **values, const std::string &what) {
                        keyword(kw, values[0], what, host);
@@ -107,7 +111,32 @@ namespace GRFLOW {
         v = host.number(FLERR, value, what);
         if (v <= 0.0)
           host.fail(FLERR, "Fix grflow/compress " + kw + " must be > 0, got " + host.text(v));
+      } else if (kw == "halt") {
+        const std::string v = value;
+        if (v == "no")
+          halt = HALT_NO;
+        else if (v == "stress")
+          halt = HALT_STRESS;
+        else if (v == "ready")
+          halt = HALT_READY;
+        else
+          host.fail(FLERR, "Fix grflow/compress halt must be no, stress or ready, got '" + v + "'");
       }
+    }
+
+    // halt: does a servo update with largest stress error err and
+    // convergence flag converged end the run?  (As fix halt with
+    // v_err < tol, or v_converged > 0.5, checked on the servo steps.)
+    bool halts(double err, double converged) const
+    {
+      return (halt == HALT_STRESS && err < tol) || (halt == HALT_READY && converged > 0.5);
+    }
+
+    // what a host that cannot end a run early (LIGGGHTS 3.8) says to halt
+    static std::string halt_unsupported()
+    {
+      return "Fix grflow/compress halt: this program cannot end a run early (LIGGGHTS 3.8: run "
+             "in segments and test the fix's outputs between them)";
     }
 
     // the cell this fix needs: atoms with radius, rmass and omega (sphere),

@@ -357,6 +357,21 @@ def test_shear_halt_is_refused(tmp_path):
     assert "halt yes: this program cannot end a run early" in proc.stdout + proc.stderr
 
 
+def test_compress_halt_is_refused(tmp_path):
+    """fix grflow/compress halt (a keyword or fix_modify) ends runs early,
+    which LIGGGHTS 3.8 cannot: an error that says so"""
+    walls = ("fix w all grflow/wall 1e6 1.0 zlo 0 zhi 1e-2\ncompute n all grflow/network slab 1.0\n"
+             "fix c all grflow/compress w n 1e5 10")
+    for extra in (" halt stress", "\nfix_modify c halt ready"):
+        deck = tmp_path / "in.halt"
+        deck.write_text(COMPUTE_DECK.replace("units si\n", "units si\nboundary p p f\n").format(
+            pair="pair_style gran model grflow\npair_coeff * *", compute=walls + extra))
+        proc = run_liggghts(["-in", str(deck)], tmp_path, check=False)
+        assert proc.returncode != 0, extra
+        assert "Fix grflow/compress halt: this program cannot end a run early" in \
+            proc.stdout + proc.stderr, extra
+
+
 def test_compute_needs_model_grflow(tmp_path):
     """the compute's forces come from GRFLOW's law: another model is refused"""
     deck = tmp_path / "in.compute"
