@@ -50,7 +50,7 @@ reason:
 - fix grflow/drag/kk: free spheres' velocities and spins decay as fix
   nve/sphere integrates the drag by hand (as the plain fix's test), atoms
   outside the group untouched; among contacts the same trajectories as
-  the plain fix;
+  the plain fix; it is chosen by -sf kk in the deck's preparation;
 - the restitution coefficient of a head-on collision against its closed
   forms, under both normal force laws;
 - the clear errors of unsupported settings (newton on, full neighbor
@@ -1336,6 +1336,7 @@ def run_deck(outdir, kokkos, nprocs=1, threads=None, **var):
         logs = "".join(p.read_text() for p in outdir.glob("log.*.lammps"))
         if stage in ("prep", "all"):
             assert COMPRESS_KK_LINE in logs, logs[-2000:]
+            assert DRAG_KK_LINE in logs, logs[-2000:]
         if stage in ("shear", "all"):
             assert SHEAR_KK_LINE in logs, logs[-2000:]
     return proc
