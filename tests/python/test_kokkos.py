@@ -36,7 +36,8 @@ reason:
   ranks and with threads; a KOKKOS shear stage killed and resumed; the
   whole protocol in one process (preparation, then shear from its restart
   file) into liquefaction; a tiny resistance-curve campaign with the
-  workflows' GPU option (gpus=1 jobs_per_gpu=2, on CPU threads);
+  workflows' GPU option (gpus=1 jobs_per_gpu=2, on CPU threads); the
+  deck's settings whose styles have no KOKKOS variant refused;
 - fix grflow/wall/kk (whose contacts call the same functions of
   grflow_wall_pass.h) on the packing of tests/decks/wall_packing.lmp:
   forces, torques, the per-atom array, the walls' per-atom virial, the
@@ -1456,6 +1457,22 @@ def test_deck_shear_kokkos(quick_prep, quick_shear, tmp_path, nprocs, threads):
     # at step 2000 (measured; by step 10000 chaos makes it 5e-2).  A wall,
     # glued layer or stress sum gone wrong shows from the first rows.
     assert d.max() < 1e-6
+
+
+@pytest.mark.parametrize("var,message", [
+    ({"cundall_l": "0.1"}, "fix damping/cundall has no KOKKOS variant"),
+    ({"pair": "stock"}, "requires pair style granular/grflow/kk"),
+])
+def test_deck_host_styles_are_refused(quick_prep, tmp_path, var, message):
+    """settings whose styles have no KOKKOS variant (they would run on the
+    host on every step) stop the deck with -sf kk: Cundall damping (the
+    deck's error), stock pair granular (compute grflow/network/kk's)"""
+    out = shear_from(quick_prep, tmp_path / "kk")
+    proc = run(deck_args(out, stage="shear", max_steps=100, **var), out, kokkos=True,
+               check=False)
+    text = proc.stdout + proc.stderr + "".join(p.read_text() for p in out.glob("log.*.lammps"))
+    assert proc.returncode != 0, text[-2000:]
+    assert message in text, text[-2000:]
 
 
 def test_deck_resume_kokkos(quick_prep, tmp_path):
