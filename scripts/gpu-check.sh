@@ -7,10 +7,12 @@
 # tiled to 8000, 64000 and 512000 spheres (the benchmark has no walls),
 # and time the protocol deck itself: its shear stage with -sf kk against 2
 # MPI ranks of the plain styles, sampled at the restart files of a carried
-# run, and R concurrent runs on the one GPU (campaigns).
+# run, and R concurrent runs on the one GPU (campaigns); the deck's
+# preparation of a 64000-sphere sample on the GPU and its shear stage there
+# and on 2 CPU cores.
 #
 #   scripts/gpu-check.sh pack KOKKOS [CARRY]      here, before the loan
-#   scripts/gpu-check.sh build|test|bench|deck|campaign|all [CARRY]   on the GPU machine
+#   scripts/gpu-check.sh build|test|bench|deck|campaign|big|all [CARRY]   on the GPU machine
 #
 # pack   makes CARRY (default build-gpu-carry/carry.tar.xz, git-ignored): the
 #        LAMMPS 4Feb2025 source that the build needs (src/ and src/fmt/, the
@@ -40,6 +42,14 @@
 #        the carried run's shear stage at once on the GPU, CAMPAIGN_NSTEPS
 #        steps each (default 20000), from its prep.restart (jammed) and from
 #        its first restart file after initial liquefaction
+# big    the decks at BIG_N spheres (default 64000; VARS as for deck): the
+#        preparation (-var stage prep) with -sf kk on the GPU, timed, cut
+#        at BIG_PREP_TIMEOUT seconds (default 420; then the log's last
+#        rows say how far it came), and from its prep.restart (jammed)
+#        the shear stage for BIG_NSTEPS steps (default 2000) with -sf kk
+#        on the GPU and on 2 MPI ranks of the plain styles: steps/s of
+#        each.  Needs no carried run.  The liquefied rate at that size
+#        needs a run into liquefaction (not made here).
 # all    build, test, bench, deck and campaign (more than one loan: run
 #        them one or two at a time)
 #
@@ -53,7 +63,7 @@
 # TILES, NSTEPS, NWARM, NSTEPS_<n> (bench; bench/kokkos_bench.sh).
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd -P)
-phase=${1:?usage: gpu-check.sh pack KOKKOS [CARRY] | build|test|bench|deck|campaign|all [CARRY]}
+phase=${1:?usage: gpu-check.sh pack KOKKOS [CARRY] | build|test|bench|deck|campaign|big|all [CARRY]}
 shift
 work=$top/build-gpu
 lmp=$work/lammps-cuda/lmp
@@ -225,6 +235,63 @@ campaign)
   echo "gpu-check campaign: $(( SECONDS - start )) s"
   ;;
 
+big)
+  [ -x "$lmp" ] || { echo "ERROR: no $lmp: run gpu-check.sh build first" >&2; exit 1; }
+  n=${BIG_N:-64000}
+  nsteps=${BIG_NSTEPS:-2000}
+  dir=$work/big/N$n
+  rm -rf "$dir"
+  mkdir -p "$dir/run"
+  kk=${KK_DECK:-"-k on g 1 -sf kk -pk kokkos newton off neigh half -var newton_pair off"}
+  extra=()
+  read -r -a v <<< "${VARS:-}"
+  for ((j = 0; j + 1 < ${#v[@]}; j += 2)); do extra+=(-var "${v[$j]}" "${v[$((j + 1))]}"); done
+  # 1. the preparation on the GPU
+  start=$SECONDS
+  set +e
+  # shellcheck disable=SC2086
+  (cd "$dir" && OMP_NUM_THREADS=1 timeout "${BIG_PREP_TIMEOUT:-420}" "$lmp" $kk -nocite \
+     -log none -screen none -in "$top/inputs/cyclic_shear.lmp" -var inputs "$top/inputs" \
+     -var outdir "$dir/run" -var N "$n" -var stage prep "${extra[@]}")
+  rc=$?
+  set -e
+  prep_s=$((SECONDS - start))
+  loop=$(awk '/^Loop time/ {t += $4; s += $9} END {printf "%.0f s for %d steps", t, s}' \
+    "$dir/run/log.prep.lammps" 2> /dev/null || true)
+  {
+    echo "# the decks at N = $n: preparation with -sf kk on the GPU"
+    if [ -f "$dir/run/prep.restart" ]; then
+      echo "preparation: $prep_s s wall (loop times: $loop), status $rc"
+      grep "^GRFLOW prep: done" "$dir/run/log.prep.lammps" || true
+    else
+      echo "preparation NOT finished: status $rc after $prep_s s (loop times of the finished runs: ${loop:-none}); its last rows:"
+      grep -E "^ +[0-9]+ +[0-9.e+-]+ " "$dir/run/log.prep.lammps" 2> /dev/null | tail -n 3 || true
+    fi
+  } | tee "$work/big/summary.N$n.txt"
+  keep "$work/big/summary.N$n.txt" "$dir/run/log.prep.lammps"
+  [ -f "$dir/run/prep.restart" ] || exit 1
+  # 2. the shear stage from prep.restart: the GPU and 2 plain ranks
+  for variant in "gpu|1|$kk" "2 ranks|2|"; do
+    IFS='|' read -r name np args <<< "$variant"
+    s=$dir/shear-${np}
+    rm -rf "$s" && mkdir -p "$s/snapshots"
+    for f in prep.restart prep.restart.cksum prep.json; do ln -s "$dir/run/$f" "$s/$f"; done
+    cmd=("$lmp")
+    [ "$np" -gt 1 ] && cmd=(mpirun --allow-run-as-root --oversubscribe -np "$np" "$lmp")
+    # shellcheck disable=SC2206
+    cmd+=($args)
+    OMP_NUM_THREADS=1 "${cmd[@]}" -nocite -log none -screen none -in "$top/inputs/cyclic_shear.lmp" \
+      -var inputs "$top/inputs" -var outdir "$s" -var stage shear -var max_steps "$nsteps" \
+      "${extra[@]}"
+    awk -v n="$nsteps" -v name="$name" '/^Loop time/ {t += $4} END {
+      printf "shear stage from prep.restart (jammed), %d steps: %.1f steps/s %s\n", n, n / t, name }' \
+      "$s/log.shear.lammps" | tee -a "$work/big/summary.N$n.txt"
+  done
+  echo "gpu-check big: $(( SECONDS - start )) s"
+  nvidia-smi >> "$work/big/summary.N$n.txt" 2>&1 || true
+  keep "$work/big/summary.N$n.txt"
+  ;;
+
 all)
   "$0" build "$@"
   "$0" test
@@ -234,7 +301,7 @@ all)
   ;;
 
 *)
-  echo "ERROR: unknown phase $phase: pack, build, test, bench, deck, campaign or all" >&2
+  echo "ERROR: unknown phase $phase: pack, build, test, bench, deck, campaign, big or all" >&2
   exit 1
   ;;
 esac
