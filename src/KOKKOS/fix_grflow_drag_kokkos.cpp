@@ -76,6 +76,14 @@ FixGRFLOWDragKokkos<DeviceType>::FixGRFLOWDragKokkos(LAMMPS *lmp, int narg, char
   // post_force syncs and marks what it touches itself
   datamask_read = EMPTY_MASK;
   datamask_modify = EMPTY_MASK;
+}
+
+/* ----------------------------------------------------------------------
+   the log says where the drag runs (once the style has its suffix)
+------------------------------------------------------------------------- */
+
+template <class DeviceType> void FixGRFLOWDragKokkos<DeviceType>::post_constructor()
+{
   if (comm->me == 0)
     utils::logmesg(lmp, "Fix {} {}: the drag on the Kokkos {}\n", style, id,
                    (execution_space == Device) ? "device" : "host");

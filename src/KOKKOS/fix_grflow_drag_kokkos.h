@@ -38,6 +38,7 @@ template <class DeviceType> class FixGRFLOWDragKokkos : public FixGRFLOWDrag {
   typedef ArrayTypes<DeviceType> AT;
 
   FixGRFLOWDragKokkos(class LAMMPS *, int, char **);
+  void post_constructor() override;
   void init() override;
   void post_force(int) override;
 };
