@@ -37,7 +37,8 @@ reason:
   whole protocol in one process (preparation, then shear from its restart
   file) into liquefaction; a tiny resistance-curve campaign with the
   workflows' GPU option (gpus=1 jobs_per_gpu=2, on CPU threads); the
-  deck's settings whose styles have no KOKKOS variant refused;
+  deck's settings whose styles have no KOKKOS variant refused, and every
+  other style of the decks with a KOKKOS variant (or a reason listed);
 - fix grflow/wall/kk (whose contacts call the same functions of
   grflow_wall_pass.h) on the packing of tests/decks/wall_packing.lmp:
   forces, torques, the per-atom array, the walls' per-atom virial, the
@@ -1457,6 +1458,34 @@ def test_deck_shear_kokkos(quick_prep, quick_shear, tmp_path, nprocs, threads):
     # at step 2000 (measured; by step 10000 chaos makes it 5e-2).  A wall,
     # glued layer or stress sum gone wrong shows from the first rows.
     assert d.max() < 1e-6
+
+
+# the styles of the decks (inputs/*.lmp) that have no KOKKOS variant, and
+# why none is needed: anything else a deck adds must have one, or LAMMPS
+# copies every atom array to the host and back around it (goal 3 of issue 42)
+DECK_HOST_STYLES = {
+    ("fix", "print"): "the series, a row every series_every steps (output)",
+    ("fix", "grflow/checksum"): "reads no atom data (EMPTY_MASK)",
+    ("fix", "damping/cundall"): "an option the deck refuses under KOKKOS",
+    ("compute", "pair/local"): "snapshots (write_dump); the stock pair's energy, refused under KOKKOS",
+    ("compute", "property/local"): "snapshots (write_dump)",
+    ("compute", "reduce"): "the stock pair's elastic energy, refused under KOKKOS",
+}
+
+
+def test_deck_styles_have_kokkos_variants():
+    """every fix and compute style of the decks has a KOKKOS variant in
+    this build, or is one of DECK_HOST_STYLES"""
+    pattern = re.compile(r'^\s*"?(fix|compute)\s+\S+\s+\S+\s+([a-z][a-z0-9_/]*)', re.M)
+    used = set()
+    for deck in Path(INPUTS).glob("*.lmp"):
+        used |= set(pattern.findall(deck.read_text()))
+    assert ("fix", "grflow/drag") in used and ("fix", "nve/sphere") in used, sorted(used)
+    listing = run(["-h"], ".", kokkos=False).stdout
+    known = set(re.findall(r"[a-z][a-z0-9_/]*/kk\b", listing))
+    missing = [f"{kind} {style}" for kind, style in sorted(used)
+               if (kind, style) not in DECK_HOST_STYLES and f"{style}/kk" not in known]
+    assert not missing, f"deck styles without a KOKKOS variant: {missing}"
 
 
 @pytest.mark.parametrize("var,message", [
