@@ -47,9 +47,10 @@
 #        at BIG_PREP_TIMEOUT seconds (default 420; then the log's last
 #        rows say how far it came), and from its prep.restart (jammed)
 #        the shear stage for BIG_NSTEPS steps (default 2000) with -sf kk
-#        on the GPU and on 2 MPI ranks of the plain styles: steps/s of
-#        each.  Needs no carried run.  The liquefied rate at that size
-#        needs a run into liquefaction (not made here).
+#        on the GPU and on 2 MPI ranks of the plain styles
+#        (bench/shear_ab.sh): steps/s and the time breakdown of each.
+#        Needs no carried run.  The liquefied rate at that size needs a
+#        run into liquefaction (not made here).
 # all    build, test, bench, deck and campaign (more than one loan: run
 #        them one or two at a time)
 #
@@ -270,23 +271,19 @@ big)
   } | tee "$work/big/summary.N$n.txt"
   keep "$work/big/summary.N$n.txt" "$dir/run/log.prep.lammps"
   [ -f "$dir/run/prep.restart" ] || exit 1
-  # 2. the shear stage from prep.restart: the GPU and 2 plain ranks
-  for variant in "gpu|1|$kk" "2 ranks|2|"; do
-    IFS='|' read -r name np args <<< "$variant"
-    s=$dir/shear-${np}
-    rm -rf "$s" && mkdir -p "$s/snapshots"
-    for f in prep.restart prep.restart.cksum prep.json; do ln -s "$dir/run/$f" "$s/$f"; done
-    cmd=("$lmp")
-    [ "$np" -gt 1 ] && cmd=(mpirun --allow-run-as-root --oversubscribe -np "$np" "$lmp")
-    # shellcheck disable=SC2206
-    cmd+=($args)
-    OMP_NUM_THREADS=1 "${cmd[@]}" -nocite -log none -screen none -in "$top/inputs/cyclic_shear.lmp" \
-      -var inputs "$top/inputs" -var outdir "$s" -var stage shear -var max_steps "$nsteps" \
-      "${extra[@]}"
-    awk -v n="$nsteps" -v name="$name" '/^Loop time/ {t += $4} END {
-      printf "shear stage from prep.restart (jammed), %d steps: %.1f steps/s %s\n", n, n / t, name }' \
-      "$s/log.shear.lammps" | tee -a "$work/big/summary.N$n.txt"
-  done
+  # 2. the shear stage from prep.restart: the GPU and 2 plain ranks, by
+  # bench/shear_ab.sh (the script of the CPU side's record,
+  # doc/studies/size-64000.md).  Its log summary runs on grflow-python;
+  # without an installed one, the python3 here (it needs no package).
+  py_build=${BUILD:-$top/build}
+  if ! command -v grflow-python > /dev/null && [ ! -x "$py_build/python/bin/python" ]; then
+    py_build=$work/python-shim
+    mkdir -p "$py_build/python/bin"
+    ln -sf "$(command -v python3)" "$py_build/python/bin/python"
+  fi
+  BUILD=$py_build LMP=$lmp OUT=$dir/ab VARS="${extra[*]}" \
+    bash "$top/bench/shear_ab.sh" "$dir/run/prep.restart" "$nsteps" 1 "gpu|1|$kk" "ranks2|2|" \
+    | tee -a "$work/big/summary.N$n.txt"
   echo "gpu-check big: $(( SECONDS - start )) s"
   nvidia-smi >> "$work/big/summary.N$n.txt" 2>&1 || true
   keep "$work/big/summary.N$n.txt"
