@@ -95,6 +95,24 @@ THREADS = int(os.environ.get("GRFLOW_KOKKOS_THREADS", "2"))
 pytestmark = pytest.mark.skipif(not LMP_KOKKOS, reason="LMP_KOKKOS (a KOKKOS lmp) is not set")
 
 
+def lammps_version(exe):
+    """the version line of lmp -h ("4 Feb 2025")"""
+    out = subprocess.run([exe, "-h"], capture_output=True, text=True, timeout=60).stdout
+    found = re.search(r"Parallel Simulator - (\d+ \w+ \d+)", out)
+    return found.group(1) if found else None
+
+
+@pytest.fixture(scope="module", autouse=True)
+def same_lammps_version():
+    """the tests pass restart and data files between LMP and LMP_KOKKOS,
+    which one LAMMPS version cannot read from another"""
+    if LMP_KOKKOS and LMP != LMP_KOKKOS:
+        kk, plain = lammps_version(LMP_KOKKOS), lammps_version(LMP)
+        if kk != plain:
+            pytest.fail(f"LMP_KOKKOS is LAMMPS {kk}, LMP is LAMMPS {plain}: "
+                        "the KOKKOS tests need one version for both")
+
+
 def kk_args(threads=None, extra=""):
     """KK_ARGS with another thread count and more package kokkos options"""
     args = list(KK_ARGS)
