@@ -14,6 +14,10 @@ neighbor lists, integration, communication) per pair.  The Pair row is
 printed too; on a GPU it holds only what the host waited for (LAMMPS does
 not fence the device there), so the loop time is the measure.  For each
 size the ratio of granular/grflow/kk to gran/hooke/history/kk is given.
+Runs of granular/grflow also give the number of touching pairs
+(GRFLOW_KK_BENCH_CONTACTS, N_c of compute grflow/network), and the Pair row
+per touching pair and step; runs made with CUDA_LAUNCH_BLOCKING=1 (labelled
+grflow_blocking by kokkos_bench.sh) make that row the pair kernels' time.
 Standard library only (the GPU check runs it).
 """
 import argparse
@@ -46,6 +50,10 @@ def parse(path):
                 cur.update(loop_s=float(m.group(1)), procs=int(m.group(2)),
                            steps=int(m.group(3)), atoms=int(m.group(4)))
                 continue
+            m = re.match(r"GRFLOW_KK_BENCH_CONTACTS (\S+)", s)
+            if m and float(m.group(1)) >= 0:
+                cur["contacts"] = float(m.group(1))
+                continue
             m = re.match(r"Pair\s*\|(.*)", s)
             if m:
                 cur["pair_s"] = float(m.group(1).split("|")[1])
@@ -73,12 +81,24 @@ def main():
         r["ns_per_pair_step"] = r["loop_s"] / (r["steps"] * r["neighbors"]) * 1e9
         if "pair_s" in r:
             r["pair_ns_per_pair_step"] = r["pair_s"] / (r["steps"] * r["neighbors"]) * 1e9
+        if "pair_s" in r and r.get("contacts", 0) > 0:
+            r["pair_ns_per_contact_step"] = r["pair_s"] / (r["steps"] * r["contacts"]) * 1e9
     print(f"{'style':8} {'atoms':>9} {'neighbors':>11} {'steps':>6} {'loop s':>9} "
           f"{'steps/s':>9} {'ns/pair/step':>13} {'(Pair row)':>11}")
     for r in sorted(runs, key=lambda r: (r["n"], r["style"])):
         pair = f"{r['pair_ns_per_pair_step']:11.3f}" if "pair_s" in r else f"{'-':>11}"
         print(f"{r['style']:8} {r['atoms']:9d} {r['neighbors']:11d} {r['steps']:6d} "
               f"{r['loop_s']:9.3f} {r['steps_per_s']:9.1f} {r['ns_per_pair_step']:13.3f} {pair}")
+    contact_runs = [r for r in runs if "pair_ns_per_contact_step" in r]
+    if contact_runs:
+        print("\ngranular/grflow: the Pair row per touching pair (N_c of compute "
+              "grflow/network at the end of the timed run) and step; on a GPU only the\n"
+              "runs labelled grflow_blocking (CUDA_LAUNCH_BLOCKING=1: every kernel waited "
+              "for) time the pair kernels")
+        print(f"{'label':16} {'atoms':>9} {'contacts':>10} {'Pair s':>9} {'ns/contact/step':>16}")
+        for r in sorted(contact_runs, key=lambda r: (r["n"], r["style"])):
+            print(f"{r['style']:16} {r['atoms']:9d} {r['contacts']:10.1f} {r['pair_s']:9.3f} "
+                  f"{r['pair_ns_per_contact_step']:16.3f}")
     ratios = {}
     for n in sorted({r["n"] for r in runs}):
         best = {}

@@ -15,6 +15,12 @@
 #   NSTEPS=1000 NWARM=200   timed and warm-up steps (per size: NSTEPS_<n>, NWARM_<n>)
 #   ROUNDS=1        interleaved rounds (grflow hooke grflow hooke ...); the
 #                   fastest round of each is reported
+#   BLOCKING=1      one more granular/grflow run per size with
+#                   CUDA_LAUNCH_BLOCKING=1 (label grflow_blocking): every
+#                   kernel launch waits for the kernel, so that the Pair row
+#                   is the pair kernels' time (LAMMPS does not fence the
+#                   device in its timers); 0 leaves it out.  On CPU threads
+#                   it changes nothing.
 set -euo pipefail
 bench=$(cd "$(dirname "$0")" && pwd)
 lmp=${1:?usage: kokkos_bench.sh LMP DATA OUTDIR}
@@ -51,4 +57,18 @@ for n in $tiles; do
     done
   done
 done
+if [ "${BLOCKING:-1}" != 0 ]; then
+  for n in $tiles; do
+    steps_var=NSTEPS_$n warm_var=NWARM_$n
+    log=$out/log.grflow_blocking.$n
+    start=$SECONDS
+    CUDA_LAUNCH_BLOCKING=1 "$lmp" -nocite -screen none -log "$log" "${kk[@]}" \
+      -in "$bench/kokkos_bench.lmp" -var data "$data" -var n "$n" -var style grflow \
+      -var label grflow_blocking -var nsteps "${!steps_var:-${NSTEPS:-1000}}" \
+      -var nwarm "${!warm_var:-${NWARM:-200}}" \
+      || { tail -n 30 "$log"; echo "kokkos_bench.sh: the blocking run at n = $n failed" >&2; exit 1; }
+    echo "grflow_blocking n=$n: $(( SECONDS - start )) s"
+    logs+=("$log")
+  done
+fi
 python3 "$bench/kokkos_bench.py" "${logs[@]}" --json "$out/results.json"

@@ -1776,10 +1776,24 @@ def test_benchmark_script(packing, tmp_path):
     assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-3000:]
     res = json.loads((tmp_path / "b" / "results.json").read_text())
     runs = {(r["style"], r["n"]): r for r in res["runs"]}
-    assert set(runs) == {("grflow", 1), ("hooke", 1), ("grflow", 2), ("hooke", 2)}
+    assert set(runs) == {(style, n) for style in ("grflow", "hooke", "grflow_blocking")
+                         for n in (1, 2)}
     for (style, n), r in runs.items():
         assert r["atoms"] == 343 * n ** 3 and r["steps"] == 100 and r["neighbors"] > 0
         assert r["ns_per_pair_step"] > 0.0
+        if style == "hooke":
+            assert "contacts" not in r
+            continue
+        # the touching pairs of the jammed packing: compute grflow/network's
+        # N_c, so 2 N_c / N is its mean contact number (4.6-5.1 in the
+        # packings of this project, about 4 at the isostatic limit); the
+        # same run with CUDA_LAUNCH_BLOCKING (which changes nothing here)
+        # counts the same contacts
+        z = 2.0 * r["contacts"] / r["atoms"]
+        print(f"[ measured ] benchmark {style} {r['atoms']}: mean contact number {z:.2f}, "
+              f"Pair {r['pair_ns_per_contact_step']:.1f} ns per contact and step")
+        assert 3.0 < z < 8.0
+        assert r["contacts"] == runs[("grflow", n)]["contacts"]
     assert set(res["grflow_over_hooke"]) == {"343", "2744"}
     print("[ measured ] benchmark at 343 and 2744 spheres (timings mean nothing here): "
           + ", ".join(f"{k}: {v:.2f}" for k, v in res["grflow_over_hooke"].items()))
