@@ -54,24 +54,47 @@
 # all    build, test, bench, deck and campaign (more than one loan: run
 #        them one or two at a time)
 #
-# On the device machine (run from the repository root there):
-#   scripts/gpu-check.sh build      (about 6-8 minutes on 16 cores)
-#   scripts/gpu-check.sh test       then   scripts/gpu-check.sh bench
-# with build-gpu-carry carried.  The logs and results are copied to $OUT
-# when it is set (the device machine's folder that comes back).
+# A loan of the GPU machine starts a bare machine (15 minutes of device
+# time, at most 10 a command, the checkout only): build and measure in the
+# same loan, one phase a command, in this order, from the repository root
+# there, with build-gpu-carry carried:
+#   scripts/gpu-check.sh build      (estimated 6-8 minutes on 16 cores; a
+#                                    second call continues a build cut short)
+#   TESTS='...' scripts/gpu-check.sh test    (TESTS: a pytest -k expression
+#                                    to run part of the tests; default all)
+#   scripts/gpu-check.sh bench
+# and deck, campaign or big in a later loan.  None of this has run on a GPU
+# yet, so these times are estimates; each phase writes its log into $OUT as
+# it goes (the folder that comes back), so a phase cut short still says how
+# far it came.
 # Environment: GRFLOW_KOKKOS_ARCH (build), GRFLOW_KOKKOS_ARGS (test; default
-# "-k on g 1 -sf kk -pk kokkos newton off neigh half gpu/aware off"), KK,
-# TILES, NSTEPS, NWARM, NSTEPS_<n> (bench; bench/kokkos_bench.sh).
+# "-k on g 1 -sf kk -pk kokkos newton off neigh half gpu/aware off"), TESTS
+# (test), KK, TILES, NSTEPS, NWARM, NSTEPS_<n>, BLOCKING (bench;
+# bench/kokkos_bench.sh).
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd -P)
 phase=${1:?usage: gpu-check.sh pack KOKKOS [CARRY] | build|test|bench|deck|campaign|big|all [CARRY]}
 shift
 work=$top/build-gpu
 lmp=$work/lammps-cuda/lmp
+# the logs of every phase are written where they come back from the device
+# machine as they grow ($OUT, so that a command cut at its time limit still
+# returns what it did), else into build-gpu/logs
+logs=${OUT:-$work/logs}
 keep() {    # copy results to $OUT (the device machine's returned folder)
   [ -n "${OUT:-}" ] || return 0
   mkdir -p "$OUT"
   cp -r "$@" "$OUT/" 2> /dev/null || true
+}
+logged() {  # logged NAME CMD...: CMD's output on the screen and in $logs/NAME; CMD's status
+  local name=$1
+  shift
+  mkdir -p "$logs"
+  set +e
+  "$@" 2>&1 | tee "$logs/$name"
+  local rc=${PIPESTATUS[0]}
+  set -e
+  return "$rc"
 }
 
 case "$phase" in
@@ -155,12 +178,11 @@ build)
     echo "GPU compute capability ${cap:-unknown}: Kokkos architecture $arch"
   fi
   nvidia-smi -L || echo "(no nvidia-smi: building without a GPU here)"
-  GRFLOW_KOKKOS_ARCH=$arch GRFLOW_KOKKOS_STYLES=${GRFLOW_KOKKOS_STYLES-minimal} \
+  logged build.log env GRFLOW_KOKKOS_ARCH=$arch GRFLOW_KOKKOS_STYLES=${GRFLOW_KOKKOS_STYLES-minimal} \
     bash "$top/scripts/setup-kokkos.sh" cuda "$(ls "$work"/src/kokkos.tar.*)" "$work/lammps-cuda" \
-      -- -D "LAMMPS_SOURCE_DIR=$work/src/lammps-4Feb2025" 2>&1 | tee "$work/build.log"
-  [ "${PIPESTATUS[0]}" = 0 ] || { keep "$work/build.log"; exit 1; }
-  echo "gpu-check build: $(( SECONDS - start )) s"
-  keep "$work/build.log"
+      -- -D "LAMMPS_SOURCE_DIR=$work/src/lammps-4Feb2025" \
+    || { echo "gpu-check build: FAILED after $(( SECONDS - start )) s" | tee -a "$logs/build.log"; exit 1; }
+  echo "gpu-check build: $(( SECONDS - start )) s" | tee -a "$logs/build.log"
   ;;
 
 test)
@@ -170,19 +192,19 @@ test)
     if "$candidate" -c "import pytest, numpy" 2> /dev/null; then py=$candidate; break; fi
   done
   [ -n "$py" ] || { echo "ERROR: the tests need a python3 with pytest and numpy" >&2; exit 1; }
-  mkdir -p "$work/tests"
+  mkdir -p "$work/tests" "$logs"
   start=$SECONDS
-  set +e
-  (cd "$work/tests" && LMP_KOKKOS=$lmp LMP=$lmp OMP_NUM_THREADS=1 \
-     GRFLOW_KOKKOS_THREADS=${GRFLOW_KOKKOS_THREADS:-0} \
-     GRFLOW_KOKKOS_ARGS=${GRFLOW_KOKKOS_ARGS:-"-k on g 1 -sf kk -pk kokkos newton off neigh half gpu/aware off"} \
-     GRFLOW_TEST_DECKS=$top/tests/decks MPIEXEC=${MPIEXEC:-mpirun} \
-     "$py" -m pytest -q -s -p no:cacheprovider --junitxml="$work/tests/junit.xml" \
-       "$top/tests/python/test_kokkos.py" 2>&1 | tee "$work/tests/pytest.log")
-  rc=${PIPESTATUS[0]}
-  set -e
-  echo "gpu-check test: $(( SECONDS - start )) s, pytest status $rc"
-  keep "$work/tests/pytest.log" "$work/tests/junit.xml"
+  select=()
+  [ -n "${TESTS:-}" ] && select=(-k "$TESTS")
+  rc=0
+  logged pytest.log env -C "$work/tests" LMP_KOKKOS="$lmp" LMP="$lmp" OMP_NUM_THREADS=1 \
+    GRFLOW_KOKKOS_THREADS="${GRFLOW_KOKKOS_THREADS:-0}" \
+    GRFLOW_KOKKOS_ARGS="${GRFLOW_KOKKOS_ARGS:-"-k on g 1 -sf kk -pk kokkos newton off neigh half gpu/aware off"}" \
+    GRFLOW_TEST_DECKS="$top/tests/decks" MPIEXEC="${MPIEXEC:-mpirun}" \
+    PYTHONPATH="$top/analysis:$top/tests/python${PYTHONPATH:+:$PYTHONPATH}" \
+    "$py" -m pytest -q -s -p no:cacheprovider --durations=15 --junitxml="$logs/junit.xml" \
+      "${select[@]}" "$top/tests/python/test_kokkos.py" || rc=$?
+  echo "gpu-check test: $(( SECONDS - start )) s, pytest status $rc" | tee -a "$logs/pytest.log"
   exit "$rc"
   ;;
 
@@ -190,33 +212,35 @@ bench)
   [ -x "$lmp" ] || { echo "ERROR: no $lmp: run gpu-check.sh build first" >&2; exit 1; }
   start=$SECONDS
   mkdir -p "$work/bench"
-  TILES=${TILES:-1 2 4} KK=${KK:--k on g 1 -sf kk -pk kokkos newton off neigh half} \
-    NSTEPS=${NSTEPS:-2000} NWARM=${NWARM:-200} NSTEPS_4=${NSTEPS_4:-500} \
-    bash "$top/bench/kokkos_bench.sh" "$lmp" "$work/src/packing.data" "$work/bench" \
-    | tee "$work/bench/summary.txt"
-  echo "gpu-check bench: $(( SECONDS - start )) s"
-  nvidia-smi > "$work/bench/nvidia-smi.txt" 2>&1 || true
+  rc=0
+  logged bench.txt env TILES="${TILES:-1 2 4}" KK="${KK:--k on g 1 -sf kk -pk kokkos newton off neigh half}" \
+    NSTEPS="${NSTEPS:-2000}" NWARM="${NWARM:-200}" NSTEPS_4="${NSTEPS_4:-500}" \
+    bash "$top/bench/kokkos_bench.sh" "$lmp" "$work/src/packing.data" "$work/bench" || rc=$?
+  echo "gpu-check bench: $(( SECONDS - start )) s, status $rc" | tee -a "$logs/bench.txt"
+  nvidia-smi > "$logs/nvidia-smi.txt" 2>&1 || true
   keep "$work/bench"
+  exit "$rc"
   ;;
 
 deck)
   [ -x "$lmp" ] || { echo "ERROR: no $lmp: run gpu-check.sh build first" >&2; exit 1; }
-  [ -d "$work/src/run" ] || { echo "ERROR: no run in the carry (gpu-check.sh pack with RUN=DIR)" >&2; exit 1; }
+  [ -d "$work/src/run" ] || { echo "ERROR: no run in the carry: pack with RUN=DIR, a run directory of the decks (the paper case: bash bench/timed_case.sh run runs/case04 2 0,1, about 1.5 h on 2 cores; the quick preset: lmp -in inputs/cyclic_shear.lmp -var preset quick, about a minute)" >&2; exit 1; }
   start=$SECONDS
   mkdir -p "$work/deck"
   kk=${KK_DECK:-"-k on g 1 -sf kk -pk kokkos newton off neigh half -var newton_pair off"}
-  LMP=$lmp OUT=$work/deck/sample VARS=${VARS:-} \
+  rc=0
+  logged deck.txt env LMP="$lmp" OUT="$work/deck/sample" VARS="${VARS:-}" \
     bash "$top/bench/sample_shear_speed.sh" "$work/src/run" "${DECK_NSTEPS:-20000}" \
-      "2 ranks|2|" "gpu|1||$kk" | tee "$work/deck/summary.txt"
-  echo "gpu-check deck: $(( SECONDS - start )) s"
-  nvidia-smi > "$work/deck/nvidia-smi.txt" 2>&1 || true
-  keep "$work/deck/summary.txt" "$work/deck/nvidia-smi.txt"
+      "2 ranks|2|" "gpu|1||$kk" || rc=$?
+  echo "gpu-check deck: $(( SECONDS - start )) s, status $rc" | tee -a "$logs/deck.txt"
+  nvidia-smi > "$logs/nvidia-smi.txt" 2>&1 || true
+  exit "$rc"
   ;;
 
 campaign)
   [ -x "$lmp" ] || { echo "ERROR: no $lmp: run gpu-check.sh build first" >&2; exit 1; }
   run=$work/src/run
-  [ -d "$run" ] || { echo "ERROR: no run in the carry (gpu-check.sh pack with RUN=DIR)" >&2; exit 1; }
+  [ -d "$run" ] || { echo "ERROR: no run in the carry: pack with RUN=DIR, a run directory of the decks (the paper case: bash bench/timed_case.sh run runs/case04 2 0,1, about 1.5 h on 2 cores; the quick preset: lmp -in inputs/cyclic_shear.lmp -var preset quick, about a minute)" >&2; exit 1; }
   start=$SECONDS
   # the first restart file after initial liquefaction (events.txt: step_IL)
   il=$(awk '!/^#/ && $7 >= 0 {print $7; exit}' "$run/events.txt" 2> /dev/null || true)
@@ -225,15 +249,16 @@ campaign)
     k=$(ls "$run" | sed -n 's/^shear\.restart\.\([0-9]*\)$/\1/p' | sort -n | awk -v il="$il" '$1 > il {print; exit}')
     [ -n "$k" ] && files+=("shear.restart.$k")
   fi
+  rc=0
   for f in "${files[@]}"; do
-    RS=${RS:-1 2 4 8} VARS=${VARS:-} \
-      KK=${KK_DECK:-"-k on g 1 -sf kk -pk kokkos newton off neigh half -var newton_pair off"} \
+    logged "campaign.$f.txt" env RS="${RS:-1 2 4 8}" VARS="${VARS:-}" \
+      KK="${KK_DECK:-"-k on g 1 -sf kk -pk kokkos newton off neigh half -var newton_pair off"}" \
       bash "$top/bench/kokkos_campaign.sh" "$lmp" "$run" "$f" "${CAMPAIGN_NSTEPS:-20000}" \
-        "$work/campaign/$f"
-    cp "$work/campaign/$f/results.txt" "$work/campaign/results.$f.txt"
-    keep "$work/campaign/results.$f.txt"
+        "$work/campaign/$f" || rc=$?
+    [ -f "$work/campaign/$f/results.txt" ] && cp "$work/campaign/$f/results.txt" "$logs/results.$f.txt"
   done
-  echo "gpu-check campaign: $(( SECONDS - start )) s"
+  echo "gpu-check campaign: $(( SECONDS - start )) s, status $rc" | tee -a "$logs/campaign.txt"
+  exit "$rc"
   ;;
 
 big)
