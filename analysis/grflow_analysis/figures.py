@@ -469,7 +469,11 @@ def main(argv=None):
     summ = ga.summary(series, prep, run.events, args.cycle, sample_ms=args.sample_ms,
                       knee=args.knee, block_ms=args.block_ms, percentile=args.zg_percentile,
                       overlaps=args.overlaps, run_dir=run_dir, shear=shear)
-    summ["run_dir"] = os.path.abspath(run_dir)
+    # the run as named from the folder the command ran in (a summary kept in
+    # a repository names no path of the machine it was made on); absolute
+    # when the run lies outside that folder
+    rel = os.path.relpath(os.path.abspath(run_dir))
+    summ["run_dir"] = os.path.abspath(run_dir) if rel.startswith("..") else rel
     with open(os.path.join(out, "summary.json"), "w") as f:
         json.dump(_json_safe(summ), f, indent=1, allow_nan=False)
         f.write("\n")

@@ -577,7 +577,11 @@ void FixNeighHistoryGRFLOWKokkos<DeviceType>::sort_kokkos(
 /* ----------------------------------------------------------------------
    exchange on the device: the partners of the atoms in k_sendlist into
    k_buf (an offset per atom, then the data: n, then tag and values of each
-   partner), and the atoms of k_copylist moved into the holes they leave
+   partner), and the atoms of k_copylist moved into the holes they leave.
+   The layout and the hole filling are what CommKokkos's exchange on the
+   device asks of a fix, and so the same as in LAMMPS's fix
+   neigh/history/kk (fix_neigh_history_kokkos.cpp), whose pack and unpack
+   this follows in one scan; the values are GRFLOW's springs as they are
 ------------------------------------------------------------------------- */
 
 template <class DeviceType>

@@ -377,3 +377,29 @@ def test_checks_can_fail(places, layouts):
     lay = {k: dict(v) for k, v in layouts.items()}
     lay["single"]["TWIST"] += 1
     assert check_single_doc(places["pair_doc"], lay)
+
+
+def test_pair_local_fields_of_decks_and_examples(layouts):
+    """The p numbers that the decks and the pair style's example give
+    compute pair/local are GRFLOW::SingleLayout's for what each reads (the
+    shear deck: the sliding force on the first atom; the example: the
+    magnitudes of the sliding, rolling and torsion forces and the normal
+    force)."""
+    lay = layouts["single"]
+
+    def p(entry, k=0):
+        return f"p{lay[entry] + 1 + k}"
+
+    expected = {
+        os.path.join(INPUTS, "shear.lmp"): {
+            "pforce": ["dx", "dy", "dz", "force", p("FS_X"), p("FS_X", 1), p("FS_X", 2)]},
+        os.path.join(ROOT, "examples", "grflow", "in.pair_granular_grflow"): {
+            "c": [p("FS_LEN"), p("FR_LEN"), p("FO_LEN"), p("FN")],
+            "c2": [p("FR_LEN"), p("FO_LEN")]},
+    }
+    for path, computes in expected.items():
+        text = read(path)
+        for cid, fields in computes.items():
+            m = re.search(r"^compute\s+%s\s+\S+\s+pair/local\s+(.*?)\s+cutoff" % cid, text, re.M)
+            assert m, f"{path}: no compute {cid} ... pair/local"
+            assert m.group(1).split() == fields, f"{path}: compute {cid}: {m.group(1)}, want {fields}"
