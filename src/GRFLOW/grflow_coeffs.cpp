@@ -15,6 +15,8 @@
 
 #include "grflow_coeffs.h"
 
+#include "grflow_coeff_rules.h"
+
 #include "grflow_host_api.h"
 
 #include "error.h"

@@ -17,7 +17,7 @@
      kn cn [kt v] [ct v] [mut v] [kr v] [cr v] [mur v] [ko v] [co v] [muo v]
            [rolling off] [torsion off]
    Unset keywords take the ratios of the paper's Table 1.  The names,
-   defaults and rules are the host-free ones of grflow_contact_coeffs.h;
+   defaults and rules are the host-free ones of grflow_coeff_rules.h;
    this file reads them from LAMMPS arguments and reports LAMMPS errors.
 ------------------------------------------------------------------------- */
 

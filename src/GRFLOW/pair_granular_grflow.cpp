@@ -24,6 +24,7 @@
 #include "pair_granular_grflow.h"
 #include "pair_granular_grflow_eval.h"
 
+#include "grflow_coeff_rules.h"
 #include "grflow_coeffs.h"
 #include "grflow_contact.h"
 #include "grflow_host_api.h"

@@ -76,7 +76,7 @@ class PairGranularGRFLOW : public Pair {
   int normal_law;    // GRFLOW::NORMAL_CLIPPED or NORMAL_UNCLIPPED (keyword normal_force)
 
   // user-facing per type pair coefficients, one array per name in
-  // GRFLOW::COEFF_NAMES (NCOEFF of them, grflow_contact_coeffs.h), changed
+  // GRFLOW::COEFF_NAMES (NCOEFF of them, grflow_coeff_rules.h), changed
   // by pair_coeff or fix adapt, and their packed copy for the kernel
   double ***param;
   GRFLOW::ContactCoeffs **packed;

@@ -32,7 +32,6 @@
 
 #include "compute_grflow_network_kokkos.h"
 
-#include "fix_grflow_wall_kokkos.h"
 #include "pair_granular_grflow_kokkos.h"
 
 #include "atom_kokkos.h"
@@ -49,6 +48,7 @@
 #include "grflow_contact.h"
 #include "grflow_network.h"
 #include "grflow_wall.h"
+#include "grflow_wall_contacts_kokkos.h"
 
 using namespace LAMMPS_NS;
 
@@ -309,7 +309,7 @@ bigint ComputeGRFLOWNetworkKokkos<DeviceType>::wall_contacts_step(Fix *wfix)
 {
   int dim = -1;
   auto *offered =
-      static_cast<FixGRFLOWWallContactsKokkos *>(wfix->extract("grflow/wall_contacts/kk", dim));
+      static_cast<GRFLOW::WallContactsKokkos *>(wfix->extract("grflow/wall_contacts/kk", dim));
   return offered->contacts->step;
 }
 
@@ -393,7 +393,7 @@ double ComputeGRFLOWNetworkKokkos<DeviceType>::local_sums(double *sums, bool net
   // contacts with the walls of each fix, in the order of the fixes
   for (int k = 0; k < nwall; k++) {
     int dim = -1;
-    auto *offered = static_cast<FixGRFLOWWallContactsKokkos *>(
+    auto *offered = static_cast<GRFLOW::WallContactsKokkos *>(
         wall_fix(k)->extract("grflow/wall_contacts/kk", dim));
     offered->records->template sync<DeviceType>();
     NetworkWallSums<DeviceType> s;

@@ -27,24 +27,14 @@ FixStyle(grflow/wall/kk/host,FixGRFLOWWallKokkos<LMPHostType>);
 #define LMP_FIX_GRFLOW_WALL_KOKKOS_H
 
 #include "fix_grflow_wall.h"
+#include "grflow_wall_contacts_kokkos.h"
 #include "kokkos_base.h"
 #include "kokkos_type.h"
 
 namespace LAMMPS_NS {
-namespace GRFLOW {
-  struct WallContacts;
-}
 
 // the device kernels (fix_grflow_wall_kokkos.cpp)
 template <class DeviceType> struct FixGRFLOWWallKernel;
-
-// extract("grflow/wall_contacts/kk") (compute grflow/network/kk): the wall
-// contacts of extract("grflow/wall_contacts") with the records where the
-// fix keeps them, per atom nwall records of WallContacts::REC_SIZE values
-struct FixGRFLOWWallContactsKokkos {
-  const GRFLOW::WallContacts *contacts;    // nwall, normals, step (its host rows not synced)
-  DAT::tdual_float_2d *records;
-};
 
 template <class DeviceType> class FixGRFLOWWallKokkos : public FixGRFLOWWall, public KokkosBase {
  public:
@@ -75,7 +65,7 @@ template <class DeviceType> class FixGRFLOWWallKokkos : public FixGRFLOWWall, pu
 
  protected:
   FixGRFLOWWallKernel<DeviceType> *kernel;
-  FixGRFLOWWallContactsKokkos offered_kk;
+  GRFLOW::WallContactsKokkos offered_kk;
 
   // per atom: the contact histories and records (GRFLOW::FlatWalls'
   // history and contact are the host rows)

@@ -28,6 +28,7 @@ NORMAL_MODEL(NORMAL_GRFLOW,grflow,20)
 #include "global_properties.h"
 #include "normal_model_base.h"
 
+#include "grflow_coeff_rules.h"
 #include "grflow_contact.h"
 #include "grflow_liggghts.h"
 

@@ -31,6 +31,7 @@
 #ifndef LMP_GRFLOW_WALL_H
 #define LMP_GRFLOW_WALL_H
 
+#include "grflow_coeff_rules.h"    // pack_coeffs
 #include "grflow_contact.h"
 
 #include <cstdint>

@@ -20,7 +20,7 @@
 #ifndef LMP_GRFLOW_WALL_ARGS_H
 #define LMP_GRFLOW_WALL_ARGS_H
 
-#include "grflow_contact_coeffs.h"
+#include "grflow_coeff_rules.h"
 #include "grflow_host.h"
 #include "grflow_wall.h"
 
