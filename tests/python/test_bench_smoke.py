@@ -247,3 +247,26 @@ def test_dense_roundoff_liggghts(tmp_path):
             if not line.startswith("#")]
     assert runs == ["newton", "sort", "x2", "z2", "ulp", "liggghts", "kn*(1+1e-3)"]
     assert "largest relative differences at step 500, 1 packing(s):" in proc.stdout
+
+
+def test_source_lines():
+    """bench/source_lines.py (the line counts of issue 40's note): its
+    comment and blank-line rule on a known text, and the totals of a folder
+    at HEAD as the sum of its files"""
+    sys.path.insert(0, str(BENCH))
+    try:
+        import source_lines
+    finally:
+        sys.path.pop(0)
+    text = "int a;\n/* one\n   two */\n// three\n\n  b(); // four\nc /* five */ ;\n"
+    assert source_lines.code_lines(text) == 3
+    proc = subprocess.run([sys.executable, str(BENCH / "source_lines.py"), "src/OPENMP"],
+                          cwd=TOP, capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 0, proc.stderr
+    rows = [line.split(None, 1) for line in proc.stdout.splitlines()]
+    files = {name: int(n) for n, name in rows if not name.endswith("(total)")}
+    totals = {name: int(n) for n, name in rows if name.endswith("(total)")}
+    assert set(files) == {"src/OPENMP/pair_granular_grflow_omp.cpp",
+                          "src/OPENMP/pair_granular_grflow_omp.h"}
+    assert all(n > 0 for n in files.values())
+    assert totals == {"src/OPENMP/ (total)": sum(files.values())}
