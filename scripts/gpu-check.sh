@@ -188,7 +188,9 @@ build)
 test)
   [ -x "$lmp" ] || { echo "ERROR: no $lmp: run gpu-check.sh build first" >&2; exit 1; }
   py=
-  for candidate in python3 /usr/bin/python3; do
+  # the build's venv first (it has the analysis' commands for the workflow
+  # test), then any python3 with pytest and numpy
+  for candidate in "$top/build/python/bin/python" python3 /usr/bin/python3; do
     if "$candidate" -c "import pytest, numpy" 2> /dev/null; then py=$candidate; break; fi
   done
   [ -n "$py" ] || { echo "ERROR: the tests need a python3 with pytest and numpy" >&2; exit 1; }

@@ -1590,9 +1590,14 @@ def test_workflow_gpu_option(tmp_path):
     """a tiny resistance-curve campaign with gpus=1 jobs_per_gpu=2: every
     run uses the KOKKOS styles through workflows/gpu_slot.sh, its two shear
     runs at once on the one "GPU" (two slots)"""
+    import shutil
     import workflowrun
     if workflowrun.SNAKEMAKE is None:
         pytest.skip("needs snakemake (Debian)")
+    if shutil.which("grflow-curve", path=workflowrun.ENV["PATH"]) is None:
+        # e.g. scripts/gpu-check.sh test with a python3 that has pytest and
+        # numpy only
+        pytest.skip("needs grflow-curve beside the tests' Python or on PATH (scripts/python-env.sh)")
     smk = os.path.join(INPUTS, "..", "workflows", "resistance_curve.smk")
     out = tmp_path / "curve"
     kokkos = " ".join(kk_args())
