@@ -83,11 +83,11 @@ def main():
             r["pair_ns_per_pair_step"] = r["pair_s"] / (r["steps"] * r["neighbors"]) * 1e9
         if "pair_s" in r and r.get("contacts", 0) > 0:
             r["pair_ns_per_contact_step"] = r["pair_s"] / (r["steps"] * r["contacts"]) * 1e9
-    print(f"{'style':8} {'atoms':>9} {'neighbors':>11} {'steps':>6} {'loop s':>9} "
+    print(f"{'style':16} {'atoms':>9} {'neighbors':>11} {'steps':>6} {'loop s':>9} "
           f"{'steps/s':>9} {'ns/pair/step':>13} {'(Pair row)':>11}")
     for r in sorted(runs, key=lambda r: (r["n"], r["style"])):
         pair = f"{r['pair_ns_per_pair_step']:11.3f}" if "pair_s" in r else f"{'-':>11}"
-        print(f"{r['style']:8} {r['atoms']:9d} {r['neighbors']:11d} {r['steps']:6d} "
+        print(f"{r['style']:16} {r['atoms']:9d} {r['neighbors']:11d} {r['steps']:6d} "
               f"{r['loop_s']:9.3f} {r['steps_per_s']:9.1f} {r['ns_per_pair_step']:13.3f} {pair}")
     contact_runs = [r for r in runs if "pair_ns_per_contact_step" in r]
     if contact_runs:
