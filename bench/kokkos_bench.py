@@ -14,8 +14,9 @@ neighbor lists, integration, communication) per pair.  The Pair row is
 printed too; on a GPU it holds only what the host waited for (LAMMPS does
 not fence the device there), so the loop time is the measure.  For each
 size the ratio of granular/grflow/kk to gran/hooke/history/kk is given.
-Runs of granular/grflow also give the number of touching pairs
-(GRFLOW_KK_BENCH_CONTACTS, N_c of compute grflow/network), and the Pair row
+Runs of granular/grflow also give the number of touching pairs at the end
+of the timed run (GRFLOW_KK_BENCH_CONTACTS after its frame: N_c of compute
+grflow/network by a run 0), and the Pair row
 per touching pair and step; runs made with CUDA_LAUNCH_BLOCKING=1 (labelled
 grflow_blocking by kokkos_bench.sh) make that row the pair kernels' time.
 Standard library only (the GPU check runs it).
@@ -36,6 +37,13 @@ def parse(path):
             if m:
                 cur = {"style": m.group(1), "n": int(m.group(2)), "log": path}
                 continue
+            m = re.match(r"GRFLOW_KK_BENCH_CONTACTS (\S+) (\d+) (\S+)", s)
+            if m:
+                # after the frame: the touching pairs at its end (run 0)
+                for r in runs:
+                    if (r["style"], r["n"]) == (m.group(1), int(m.group(2))):
+                        r["contacts"] = float(m.group(3))
+                continue
             if cur is None:
                 continue
             if re.match(r"GRFLOW_KK_BENCH_END", s):
@@ -49,10 +57,6 @@ def parse(path):
             if m:
                 cur.update(loop_s=float(m.group(1)), procs=int(m.group(2)),
                            steps=int(m.group(3)), atoms=int(m.group(4)))
-                continue
-            m = re.match(r"GRFLOW_KK_BENCH_CONTACTS (\S+)", s)
-            if m and float(m.group(1)) >= 0:
-                cur["contacts"] = float(m.group(1))
                 continue
             m = re.match(r"Pair\s*\|(.*)", s)
             if m:
@@ -92,7 +96,7 @@ def main():
     contact_runs = [r for r in runs if "pair_ns_per_contact_step" in r]
     if contact_runs:
         print("\ngranular/grflow: the Pair row per touching pair (N_c of compute "
-              "grflow/network at the end of the timed run) and step; on a GPU only the\n"
+              "grflow/network after the timed run) and step; on a GPU only the\n"
               "runs labelled grflow_blocking (CUDA_LAUNCH_BLOCKING=1: every kernel waited "
               "for) time the pair kernels")
         print(f"{'label':16} {'atoms':>9} {'contacts':>10} {'Pair s':>9} {'ns/contact/step':>16}")

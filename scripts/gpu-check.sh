@@ -86,6 +86,9 @@ keep() {    # copy results to $OUT (the device machine's returned folder)
   mkdir -p "$OUT"
   cp -r "$@" "$OUT/" 2> /dev/null || true
 }
+no_run="ERROR: no run in the carry: pack with RUN=DIR, a run directory of the decks (the paper \
+case: bash bench/timed_case.sh run runs/case04 2 0,1, about 1.5 h on 2 cores; the quick preset: \
+lmp -in inputs/cyclic_shear.lmp -var preset quick, about a minute)"
 logged() {  # logged NAME CMD...: CMD's output on the screen and in $logs/NAME; CMD's status
   local name=$1
   shift
@@ -226,7 +229,7 @@ bench)
 
 deck)
   [ -x "$lmp" ] || { echo "ERROR: no $lmp: run gpu-check.sh build first" >&2; exit 1; }
-  [ -d "$work/src/run" ] || { echo "ERROR: no run in the carry: pack with RUN=DIR, a run directory of the decks (the paper case: bash bench/timed_case.sh run runs/case04 2 0,1, about 1.5 h on 2 cores; the quick preset: lmp -in inputs/cyclic_shear.lmp -var preset quick, about a minute)" >&2; exit 1; }
+  [ -d "$work/src/run" ] || { echo "$no_run" >&2; exit 1; }
   start=$SECONDS
   mkdir -p "$work/deck"
   kk=${KK_DECK:-"-k on g 1 -sf kk -pk kokkos newton off neigh half -var newton_pair off"}
@@ -242,7 +245,7 @@ deck)
 campaign)
   [ -x "$lmp" ] || { echo "ERROR: no $lmp: run gpu-check.sh build first" >&2; exit 1; }
   run=$work/src/run
-  [ -d "$run" ] || { echo "ERROR: no run in the carry: pack with RUN=DIR, a run directory of the decks (the paper case: bash bench/timed_case.sh run runs/case04 2 0,1, about 1.5 h on 2 cores; the quick preset: lmp -in inputs/cyclic_shear.lmp -var preset quick, about a minute)" >&2; exit 1; }
+  [ -d "$run" ] || { echo "$no_run" >&2; exit 1; }
   start=$SECONDS
   # the first restart file after initial liquefaction (events.txt: step_IL)
   il=$(awk '!/^#/ && $7 >= 0 {print $7; exit}' "$run/events.txt" 2> /dev/null || true)

@@ -9,10 +9,10 @@
 #            Kokkos 4.5.01), as for scripts/setup-kokkos.sh cuda
 # BUILD_DIR  default build-nvcc-check in this repository
 #
-# It builds Kokkos for CUDA (scripts/build-kokkos.sh, with kokkos/patches
-# for CUDA 13; GRFLOW_KOKKOS_ARCH, default HOPPER90), configures LAMMPS with
-# GRFLOW and KOKKOS as scripts/setup-kokkos.sh cuda does (the minimal set of
-# LAMMPS KOKKOS styles), and compiles only the object files of GRFLOW's
+# It runs scripts/setup-kokkos.sh cuda up to the configure (Kokkos for CUDA
+# built by scripts/build-kokkos.sh with kokkos/patches for CUDA 13;
+# GRFLOW_KOKKOS_ARCH, default HOPPER90; the minimal set of LAMMPS KOKKOS
+# styles), then compiles only the object files of GRFLOW's
 # sources (those of src/GRFLOW, src/OPENMP and src/KOKKOS that the build
 # compiles) through Kokkos's nvcc_wrapper, which compiles every file of a CUDA build
 # as CUDA.  It links nothing and runs nothing.  Prints each file, whether
@@ -35,24 +35,15 @@ arch=${GRFLOW_KOKKOS_ARCH:-HOPPER90}
 mkdir -p "$build"
 start=$(date +%s)
 
-# 1. a CUDA Kokkos: an install as it is, or the source built into the build
-if [ -f "$kokkos/lib/cmake/Kokkos/KokkosConfig.cmake" ]; then
-  kokkos_root=$(realpath "$kokkos")
-  grep -q "^#define KOKKOS_ENABLE_CUDA$" "$kokkos_root/include/KokkosCore_config.h" \
-    || { echo "ERROR: the Kokkos in $kokkos_root has no CUDA backend" >&2; exit 1; }
-else
-  kokkos_root=$build/kokkos
-  bash "$top/scripts/build-kokkos.sh" cuda "$kokkos" "$kokkos_root" "$arch"
-fi
+# 1. a CUDA Kokkos (an install as it is, or the source built into the
+#    build) and the configure of the CUDA build: scripts/setup-kokkos.sh cuda,
+#    stopped before it builds
+GRFLOW_CONFIGURE_ONLY=1 GRFLOW_KOKKOS_ARCH=$arch GRFLOW_KOKKOS_STYLES=minimal GRFLOW_JOBS=$jobs \
+  bash "$top/scripts/setup-kokkos.sh" cuda "$kokkos" "$build" > "$build/configure.log" 2>&1 \
+  || { tail -n 30 "$build/configure.log"; echo "ERROR: the Kokkos build or the configure failed ($build/configure.log)" >&2; exit 1; }
 kokkos_done=$(date +%s)
 
-# 2. the configure of the CUDA build (the same options as setup-kokkos.sh cuda)
-cmake -S "$top" -B "$build" -G Ninja -D CMAKE_BUILD_TYPE=Release -D GRFLOW_KOKKOS=ON \
-  -D "Kokkos_ROOT=$kokkos_root" -D GRFLOW_KOKKOS_STYLES=minimal \
-  -D "CMAKE_CXX_COMPILER=$kokkos_root/bin/nvcc_wrapper" > "$build/configure.log" 2>&1 \
-  || { tail -n 30 "$build/configure.log"; echo "ERROR: the configure failed ($build/configure.log)" >&2; exit 1; }
-
-# 3. the object files of GRFLOW's sources in the staged tree, as many at
+# 2. the object files of GRFLOW's sources in the staged tree, as many at
 #    once as jobs allow
 mapfile -t objects < <(ninja -C "$build" -t targets all \
   | sed -n 's/^\(.*\/src\/\(GRFLOW\|OPENMP\|KOKKOS\)\/[^/]*\.cpp\.o\): .*/\1/p' \
@@ -84,6 +75,6 @@ for o in "${objects[@]}"; do
   fi
 done
 end=$(date +%s)
-echo "times: Kokkos $(( kokkos_done - start )) s, configure and compile $(( end - kokkos_done )) s"
+echo "times: Kokkos and configure $(( kokkos_done - start )) s, compile $(( end - kokkos_done )) s"
 echo "nvcc check: $ok of ${#objects[@]} files compiled (log: $build/compile.log)"
 [ $fail = 0 ] && [ $ok = ${#objects[@]} ]

@@ -25,6 +25,8 @@
 # KOKKOS styles a GRFLOW run uses (cmake/GRFLOWKokkos.cmake), in a third
 # of the time.  The default build (scripts/setup.sh) is not touched; this
 # one is used from BUILD_DIR (BUILD_DIR/lmp).  Prints "lmp: PATH" at the end.
+# GRFLOW_CONFIGURE_ONLY=1 stops after the configure (scripts/nvcc-check.sh
+# then compiles only GRFLOW's files) and prints "configured: BUILD_DIR".
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd -P)
 usage="usage: setup-kokkos.sh openmp|cuda KOKKOS [BUILD_DIR] [-- CMAKE_ARGS...]"
@@ -78,6 +80,11 @@ fi
 generator=()
 command -v ninja > /dev/null && generator=(-G Ninja)
 cmake -S "$top" -B "$build" "${generator[@]}" "${opts[@]}" "$@"
+if [ "${GRFLOW_CONFIGURE_ONLY:-0}" = 1 ]; then
+  echo "times: Kokkos $(( kokkos_done - start )) s"
+  echo "configured: $build"
+  exit 0
+fi
 cmake --build "$build" -j "$jobs"
 lmp=$build/lmp
 lammps_done=$(date +%s)
